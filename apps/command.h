@@ -1,0 +1,34 @@
+// How `vivp` subcommands plug into the command line.
+//
+// Each subcommand registers its options on a CLI11 subcommand and returns the
+// function that runs it. Bad input is reported by throwing UsageError (exit
+// status 2, one line); any other failure is a std::exception (exit status 1).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace vivp::app {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+using Runner = std::function<int()>;
+
+Runner AddSpectrumCommand(CLI::App& app);
+
+// Refuses to write into an existing non-empty directory unless force is set,
+// so nothing a user keeps there is overwritten without being asked.
+void CheckOutputDirectory(const std::filesystem::path& dir, bool force);
+// Same for a single output file.
+void CheckOutputFile(const std::filesystem::path& file, bool force);
+
+// CLI11 validators with messages that name the valid values.
+CLI::Validator FiniteNumber();
+CLI::Validator WholeNumberAtLeast(long long minimum, const std::string& hint);
+
+}  // namespace vivp::app

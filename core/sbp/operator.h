@@ -1,0 +1,133 @@
+// An SBP first-derivative operator on a uniform time grid, stored as stencils.
+//
+//   auto D = vivp::sbp::MakeOperator<double>("sbp42", 64, 0.0, 1.0);
+//   D.Apply(x, dx);          // dx = D x, O(N), any scalar (double, Jets, ...)
+//   D.ApplyTranspose(y, z);  // z = D^T y, O(N)
+//   D.Integrate(f);          // 1^T H f, the SBP quadrature
+//
+// D = H^{-1} Q with H diagonal positive and Q + Q^T = B = diag(-1, 0, ..., 1),
+// so H D + D^T H = B (the discrete integration by parts).
+//
+// The operator never holds a matrix: a row is a first column plus a span of
+// coefficients per unit dt (left closure, interior stencil, or the mirrored
+// right closure). SparseD()/DenseD() export matrices for analysis only.
+//
+// Warnings:
+//  1. Coefficients are per unit dt; every apply multiplies by 1/dt once per
+//     row, after summing, so a constant is annihilated to round-off.
+//  2. The Real parameter is the floating-point type at the bottom of every
+//     scalar the operator is applied to: Operator<double> applies to double and
+//     ceres::Jet<double, N> (nested too), Operator<long double> to long double.
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "core/autodiff/scalar.h"
+#include "core/sbp/coefficients.h"
+
+namespace vivp::sbp {
+
+template <class Real>
+class Operator {
+ public:
+  // Row i of D (per unit dt): D[i][first + j] = coeffs[j].
+  struct Row {
+    int first;
+    std::span<const Real> coeffs;
+  };
+
+  // Use MakeOperator (builder.h), which validates its arguments.
+  Operator(const Coefficients& table, int points, Real t_start, Real t_end);
+
+  std::string_view name() const { return table_->name; }
+  std::string_view citation() const { return table_->citation; }
+  int interior_order() const { return table_->interior_order; }
+  int boundary_order() const { return table_->boundary_order; }
+  int min_points() const { return table_->min_points; }
+  int boundary_rows() const { return table_->boundary_rows(); }
+  const Coefficients& table() const { return *table_; }
+
+  int points() const { return n_; }
+  Real t_start() const { return t_start_; }
+  Real t_end() const { return t_end_; }
+  Real dt() const { return dt_; }
+  Real t(int i) const { return t_start_ + dt_ * static_cast<Real>(i); }
+  std::vector<Real> Grid() const;
+
+  // Largest |j - i| over the nonzero entries D[i][j].
+  int Bandwidth() const { return bandwidth_; }
+
+  Row row(int i) const {
+    const int r = boundary_rows();
+    if (i < r) return {0, left_[i]};
+    if (i >= n_ - r) {
+      const auto& c = right_[n_ - 1 - i];
+      return {n_ - static_cast<int>(c.size()), c};
+    }
+    return {i - half_width_, interior_};
+  }
+
+  // H_ii, including dt.
+  Real NormWeight(int i) const {
+    const int r = static_cast<int>(weights_.size());
+    if (i < r) return dt_ * weights_[i];
+    if (i >= n_ - r) return dt_ * weights_[n_ - 1 - i];
+    return dt_;
+  }
+
+  // (D u)_i; u points at all N values.
+  template <class T>
+  T ApplyRow(int i, const T* u) const {
+    const Row rw = row(i);
+    T acc = Lift<T>(Real(0));
+    for (std::size_t j = 0; j < rw.coeffs.size(); ++j)
+      AddScaled(acc, rw.coeffs[j], u[rw.first + j]);
+    return Scaled(inv_dt_, acc);
+  }
+
+  template <class T>
+  void Apply(std::span<const T> u, std::span<T> out) const;
+  template <class T>
+  void ApplyTranspose(std::span<const T> u, std::span<T> out) const;
+  template <class T>
+  std::vector<T> Apply(const std::vector<T>& u) const {
+    std::vector<T> out(u.size());
+    Apply(std::span<const T>(u), std::span<T>(out));
+    return out;
+  }
+  template <class T>
+  std::vector<T> ApplyTranspose(const std::vector<T>& u) const {
+    std::vector<T> out(u.size());
+    ApplyTranspose(std::span<const T>(u), std::span<T>(out));
+    return out;
+  }
+
+  // 1^T H u.
+  template <class T>
+  T Integrate(std::span<const T> u) const;
+
+  Eigen::SparseMatrix<Real> SparseD() const;
+  Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic> DenseD() const;
+  Eigen::Matrix<Real, Eigen::Dynamic, 1> NormDiagonal() const;
+
+ private:
+  void CheckSize(std::size_t in, std::size_t out) const;
+
+  const Coefficients* table_;
+  int n_;
+  Real t_start_, t_end_, dt_, inv_dt_;
+  int half_width_;
+  int bandwidth_;
+  std::vector<Real> weights_;
+  std::vector<std::vector<Real>> left_;   // rows 0..r-1
+  std::vector<std::vector<Real>> right_;  // right_[i] is row N-1-i
+  std::vector<Real> interior_;
+};
+
+}  // namespace vivp::sbp
+
+#include "core/sbp/operator_impl.h"

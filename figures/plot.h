@@ -1,0 +1,45 @@
+// A figure as three kinds of file side by side: data (.dat), the gnuplot
+// script that draws it (.gp), and the PNG. Anyone can edit the script and
+// re-run `gnuplot STEM.gp` in the directory.
+//
+//   vivp::plot::Figure fig(dir, "fig04_spectrum");
+//   auto d = fig.Data("D", {{re, im}, ...}, "re im");
+//   fig.script() << "plot '" << d << "' using 1:2 with points\n";
+//   fig.Render();  // writes fig04_spectrum.gp, runs gnuplot, checks the PNG
+#pragma once
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace vivp::plot {
+
+class Figure {
+ public:
+  Figure(std::filesystem::path dir, std::string stem, int width = 900,
+         int height = 600);
+
+  // Writes rows (one line each, full double precision) to STEM_NAME.dat with
+  // a '# columns' header; returns the file name relative to the directory.
+  std::string Data(const std::string& name,
+                   const std::vector<std::vector<double>>& rows,
+                   const std::string& columns);
+
+  std::ostringstream& script() { return script_; }
+
+  // Writes STEM.gp (terminal, output and the script body), pipes it through
+  // gnuplot in the figure directory and checks that STEM.png was made.
+  // Returns the PNG path; throws std::runtime_error on failure.
+  std::filesystem::path Render();
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+  std::string stem_;
+  int width_, height_;
+  std::ostringstream script_;
+};
+
+}  // namespace vivp::plot

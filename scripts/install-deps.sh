@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian packages vivp builds against, and only those that are missing.
+# Idempotent and non-interactive: when everything is present it makes no apt call at all.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libceres-dev libgoogle-glog-dev
+  libboost-dev libboost-test-dev libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev
+  libgnuplot-iostream-dev gnuplot-nox
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libginac-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  exit 0
+fi
+
+echo "vivp: installing missing Debian packages: ${missing[*]}" >&2
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "vivp: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  sudo=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
