@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev
   libboost-dev libboost-test-dev libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev
-  libgnuplot-iostream-dev gnuplot-nox
+  liblapack-dev libgnuplot-iostream-dev gnuplot-nox
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libginac-dev
 )
 

@@ -55,6 +55,14 @@ class Operator {
   Real t_start() const { return t_start_; }
   Real t_end() const { return t_end_; }
   Real dt() const { return dt_; }
+  Real inv_dt() const { return inv_dt_; }
+  // D[i][j] including 1/dt (zero outside row i's stencil).
+  Real Entry(int i, int j) const {
+    const Row rw = row(i);
+    const int k = j - rw.first;
+    if (k < 0 || k >= static_cast<int>(rw.coeffs.size())) return Real(0);
+    return rw.coeffs[k] * inv_dt_;
+  }
   Real t(int i) const { return t_start_ + dt_ * static_cast<Real>(i); }
   std::vector<Real> Grid() const;
 

@@ -1,0 +1,171 @@
+// The reduced critical-point equations of the doubled action (formulation
+// §1.8): in x₊ = (x1 + x2)/2, x₋ = x1 − x2 the solution has x₋ = λ1 = λ2 = 0
+// exactly, and what remains are the discrete Euler–Lagrange equations
+// ∂S/∂x₋ = 0 at x₋ = 0 (obtained by differentiating S, never written by hand)
+// plus the initial-data constraints.
+//
+// Unknowns y = (x₊ node-major: y[i*d + c], then λ3 (d), then λ4 (d)).
+// Rows: initial position (d), initial velocity (d, second order only), then
+// ∂S/∂x₋ at every node. λ4 and the velocity row are absent for first-order
+// systems (multipliers λ1, λ3 only, formulation §1.4).
+//
+//   ∂S/∂x₋_j = H_j ∂f_j/∂x₋ + (D̄ᵀ H ∂f/∂v₋)_j + λ3 δ_{j,N-1} + λ4 D_{N-1,j}
+//
+// with f the density in ± variables (density.h). The residual is evaluated
+// matrix-free (apply D̄, weight with H, apply D̄ᵀ): an assembled DᵀHD has row
+// sums that are not exactly zero, a spurious constant force that the Nt³
+// conditioning amplifies (formulation §1.8).
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/action/density.h"
+#include "core/action/local_map.h"
+#include "core/linalg/banded.h"
+#include "core/sbp/regularized.h"
+
+namespace vivp::action {
+
+template <class P, class Real>
+class ReducedSystem {
+ public:
+  static constexpr int d = P::kDim;
+  using State = std::array<Real, d>;
+
+  ReducedSystem(const P& problem, const sbp::RegularizedOperator<Real>& dbar,
+                const State& x_init, const State& v_init, int order)
+      : problem_(problem), dbar_(dbar), x_init_(x_init), v_init_(v_init),
+        order_(order), n_(dbar.points()) {}
+
+  int points() const { return n_; }
+  int order() const { return order_; }
+  int multiplier_blocks() const { return order_ == 2 ? 2 : 1; }
+  int size() const { return (n_ + multiplier_blocks()) * d; }
+  const sbp::RegularizedOperator<Real>& dbar() const { return dbar_; }
+  const State& x_init() const { return x_init_; }
+
+  int X(int node, int c) const { return node * d + c; }
+  int Lambda3(int c) const { return n_ * d + c; }
+  int Lambda4(int c) const { return n_ * d + d + c; }
+  int NodeRow(int node, int c) const {
+    return multiplier_blocks() * d + node * d + c;
+  }
+
+  // Positions and regularized velocities v = D̄x̄ of the path, per component.
+  void Paths(const Real* y, std::vector<Real>* x, std::vector<Real>* v) const {
+    for (int c = 0; c < d; ++c) {
+      x[c].resize(n_);
+      v[c].resize(n_);
+      for (int i = 0; i < n_; ++i) x[c][i] = y[X(i, c)];
+      dbar_.Apply(std::span<const Real>(x[c]), x_init_[c], std::span<Real>(v[c]));
+    }
+  }
+
+  void Residual(const Real* y, Real* f) const {
+    std::vector<Real> x[d], v[d], w[d];
+    Paths(y, x, v);
+    const auto& D = dbar_.base();
+    for (int c = 0; c < d; ++c) w[c].assign(n_, Real(0));
+    for (int i = 0; i < n_; ++i) {
+      Real p[2 * d], m[2 * d];
+      for (int c = 0; c < d; ++c) {
+        p[c] = x[c][i];
+        p[d + c] = v[c][i];
+        m[c] = m[d + c] = Real(0);
+      }
+      const auto g = ad::MinusGradient<Real, 2 * d, 2 * d>(
+          [&](const auto* pv, const auto* mv) {
+            return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
+          },
+          p, m);
+      const Real h = D.NormWeight(i);
+      for (int c = 0; c < d; ++c) {
+        f[NodeRow(i, c)] = h * g[c];
+        w[c][i] = h * g[d + c];
+      }
+    }
+    std::vector<Real> dtw(n_);
+    for (int c = 0; c < d; ++c) {
+      D.ApplyTranspose(std::span<const Real>(w[c]), std::span<Real>(dtw));
+      dtw[0] += dbar_.penalty() * w[c][0];  // D̄ᵀ = Dᵀ + penalty E0
+      for (int j = 0; j < n_; ++j) f[NodeRow(j, c)] += dtw[j];
+      f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
+      f[c] = x[c][0] - x_init_[c];
+      if (order_ == 2) {
+        const auto row = D.row(n_ - 1);
+        for (std::size_t k = 0; k < row.coeffs.size(); ++k)
+          f[NodeRow(row.first + static_cast<int>(k), c)] +=
+              y[Lambda4(c)] * row.coeffs[k] * D.inv_dt();
+        f[d + c] = D.ApplyRow(0, x[c].data()) - v_init_[c];
+      }
+    }
+  }
+
+  // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
+  // same position are summed by the sink.
+  template <class Sink>
+  void Jacobian(const Real* y, Sink& sink) const {
+    std::vector<Real> x[d], v[d];
+    Paths(y, x, v);
+    const auto& D = dbar_.base();
+    for (int i = 0; i < n_; ++i) {
+      Real p[2 * d], m[2 * d];
+      for (int c = 0; c < d; ++c) {
+        p[c] = x[c][i];
+        p[d + c] = v[c][i];
+        m[c] = m[d + c] = Real(0);
+      }
+      const auto mixed = ad::Mixed<Real, 2 * d, 2 * d>(
+          [&](const auto* pv, const auto* mv) {
+            return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
+          },
+          p, m);
+      // Rows: (x₋, v₋) of node i; columns: (x₊, v₊). Both map to path
+      // values through the same local map, since v± = D̄x± (linear part).
+      const Eigen::Matrix<Real, 2 * d, 2 * d> a = D.NormWeight(i) * mixed.dmp;
+      const LocalMap<Real> map = MakeLocalMap(dbar_, i);
+      for (int ea = 0; ea < map.size; ++ea) {
+        const auto& ra = map.entries[ea];
+        for (int eb = 0; eb < map.size; ++eb) {
+          const auto& cb = map.entries[eb];
+          const Eigen::Matrix<Real, d, d> block =
+              ra.wx * cb.wx * a.template block<d, d>(0, 0) +
+              ra.wx * cb.wv * a.template block<d, d>(0, d) +
+              ra.wv * cb.wx * a.template block<d, d>(d, 0) +
+              ra.wv * cb.wv * a.template block<d, d>(d, d);
+          for (int r = 0; r < d; ++r)
+            for (int s = 0; s < d; ++s)
+              if (block(r, s) != Real(0))
+                sink.Add(NodeRow(ra.node, r), X(cb.node, s), block(r, s));
+        }
+      }
+    }
+    for (int c = 0; c < d; ++c) {
+      sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
+      sink.Add(c, X(0, c), Real(1));
+      if (order_ == 2) {
+        const auto last = D.row(n_ - 1);
+        for (std::size_t k = 0; k < last.coeffs.size(); ++k)
+          if (last.coeffs[k] != Real(0))
+            sink.Add(NodeRow(last.first + static_cast<int>(k), c), Lambda4(c),
+                     last.coeffs[k] * D.inv_dt());
+        const auto first = D.row(0);
+        for (std::size_t k = 0; k < first.coeffs.size(); ++k)
+          if (first.coeffs[k] != Real(0))
+            sink.Add(d + c, X(first.first + static_cast<int>(k), c),
+                     first.coeffs[k] * D.inv_dt());
+      }
+    }
+  }
+
+ private:
+  const P& problem_;
+  const sbp::RegularizedOperator<Real>& dbar_;
+  State x_init_, v_init_;
+  int order_;
+  int n_;
+};
+
+}  // namespace vivp::action
