@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<std::pair<std::string, vivp::app::Runner>> commands = {
       {"spectrum", vivp::app::AddSpectrumCommand(app)},
+      {"converge", vivp::app::AddConvergeCommand(app)},
   };
 
   try {

@@ -1,0 +1,169 @@
+// `vivp converge`: errors at t_end and fitted orders of the variational solver
+// over a list of grid sizes (Rothkopf & Nordström 2023, Figs. 6-13).
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "apps/command.h"
+#include "solvers/variational/registry.h"
+
+namespace vivp::app {
+namespace {
+
+struct ConvergeOptions {
+  std::string problem;
+  std::string op = "sbp42";
+  std::string points = "16,32,64,128,256,512";
+  std::string solver = "newton";
+  double t_end = 1.0;
+  std::string json;
+  bool force = false;
+};
+
+std::vector<long long> ParsePoints(const std::string& list) {
+  std::vector<long long> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    long long v = 0;
+    std::size_t used = 0;
+    try {
+      v = std::stoll(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || item.empty())
+      throw UsageError("--points: expected a comma-separated list of whole "
+                       "numbers such as 16,32,64, got '" + list + "'");
+    out.push_back(v);
+  }
+  if (out.size() < 2)
+    throw UsageError("--points: need at least two grid sizes to fit an order, "
+                     "got '" + list + "'");
+  return out;
+}
+
+nlohmann::json Number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json OrdersJson(const ConvergenceOrders& o) {
+  return {{"x", Number(o.x)},
+          {"v", Number(o.v)},
+          {"x_corrected", Number(o.x_corrected)},
+          {"p_corrected", Number(o.p_corrected)}};
+}
+
+Path ParseSolver(const std::string& s) {
+  if (s == "newton") return Path::kReducedNewton;
+  if (s == "full-newton") return Path::kFullNewton;
+  if (s == "ceres-lm") return Path::kCeresLm;
+  throw UsageError("--solver: '" + s +
+                   "' is not a solver; valid: newton, full-newton, ceres-lm");
+}
+
+int RunConverge(const ConvergeOptions& o) {
+  if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
+  const NamedProblem& problem = FindProblem(o.problem);
+  const std::vector<long long> points = ParsePoints(o.points);
+  SolveOptions options;
+  options.path = ParseSolver(o.solver);
+  Grid grid;
+  grid.op = o.op;
+  grid.t_end = o.t_end;
+  const ConvergenceStudy study = RunConvergence(problem, grid, points, options);
+
+  std::ostream& human = o.json == "-" ? std::cerr : std::cout;
+  human << problem.name << " (" << problem.description << "), " << o.op
+        << ", solver " << o.solver << ", t_end = " << o.t_end << "\n";
+  human << std::setw(7) << "Nt" << std::setw(11) << "dt" << std::setw(11)
+        << "err x" << std::setw(11) << "err Dx" << std::setw(11) << "err x+λ4"
+        << std::setw(11) << "err −λ3" << std::setw(6) << "it" << std::setw(10)
+        << "seconds\n";
+  bool all_converged = true;
+  for (const auto& r : study.rows) {
+    human << std::setw(7) << r.points << std::scientific << std::setprecision(2)
+          << std::setw(11) << r.dt << std::setw(11) << r.err_x << std::setw(11)
+          << r.err_v << std::setw(11) << r.err_x_corrected << std::setw(11)
+          << r.err_p_corrected << std::defaultfloat << std::setw(6)
+          << r.iterations << std::setw(10) << std::setprecision(3) << r.seconds
+          << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
+    all_converged = all_converged && r.converged;
+  }
+  human << std::fixed << std::setprecision(2) << "fitted order (dt = 1/Nt):     x "
+        << study.orders.x << ", Dx " << study.orders.v << ", x+M⁻¹λ4 "
+        << study.orders.x_corrected << ", −λ3 " << study.orders.p_corrected
+        << "\nfitted order (dt = 1/(Nt−1)): x " << study.orders_true_dt.x
+        << ", Dx " << study.orders_true_dt.v << ", x+M⁻¹λ4 "
+        << study.orders_true_dt.x_corrected << ", −λ3 "
+        << study.orders_true_dt.p_corrected << "\n"
+        << std::defaultfloat;
+
+  if (!o.json.empty()) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& r : study.rows)
+      rows.push_back({{"points", r.points},
+                      {"dt", r.dt},
+                      {"dt_true", r.dt_true},
+                      {"err_x", Number(r.err_x)},
+                      {"err_v", Number(r.err_v)},
+                      {"err_x_corrected", Number(r.err_x_corrected)},
+                      {"err_p_corrected", Number(r.err_p_corrected)},
+                      {"error_estimate", Number(r.error_estimate)},
+                      {"iterations", r.iterations},
+                      {"seconds", r.seconds},
+                      {"converged", r.converged},
+                      {"status", r.reason}});
+    const nlohmann::json j = {{"problem", problem.name},
+                              {"operator", o.op},
+                              {"solver", o.solver},
+                              {"t_end", o.t_end},
+                              {"rows", rows},
+                              {"orders", OrdersJson(study.orders)},
+                              {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
+    if (o.json == "-") {
+      std::cout << j.dump(1) << "\n";
+    } else {
+      std::ofstream f(o.json);
+      f << j.dump(1) << "\n";
+      if (!f) throw std::runtime_error("cannot write " + o.json);
+    }
+  }
+  if (!all_converged) {
+    std::cerr << "vivp: some solves did not converge (see the table)\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Runner AddConvergeCommand(CLI::App& app) {
+  auto o = std::make_shared<ConvergeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "converge",
+      "Errors at t_end and fitted orders of the variational solver over grid "
+      "sizes");
+  cmd->add_option("--problem", o->problem, "problem: " + ProblemNameList())
+      ->required();
+  std::vector<std::string> names(sbp::kOperatorNames.begin(),
+                                 sbp::kOperatorNames.end());
+  cmd->add_option("--operator", o->op, "SBP operator")
+      ->check(CLI::IsMember(names))
+      ->capture_default_str();
+  cmd->add_option("--points", o->points, "comma-separated grid sizes Nt")
+      ->capture_default_str();
+  cmd->add_option("--solver", o->solver, "newton | full-newton | ceres-lm")
+      ->capture_default_str();
+  cmd->add_option("--t-end", o->t_end, "end time (start is 0)")
+      ->check(FiniteNumber())
+      ->capture_default_str();
+  cmd->add_option("--json", o->json, "write the study as JSON (- for stdout)");
+  cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
+  return [o] { return RunConverge(*o); };
+}
+
+}  // namespace vivp::app

@@ -1,0 +1,65 @@
+// Convergence studies of the variational solver: errors at t_end against an
+// exact solution for a list of grid sizes, and fitted orders.
+//
+// Orders are fitted twice: against Δt = 1/Nt (the convention of Rothkopf &
+// Nordström 2023, which reproduces their numbers) and against the true grid
+// spacing (t_end − t_start)/(Nt − 1) (formulation §1.5).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/fit.h"
+#include "solvers/variational/ivp_types.h"
+
+namespace vivp {
+
+struct ConvergenceRow {
+  long long points = 0;
+  double dt = 0;       // (t_end − t_start)/Nt, the paper's convention
+  double dt_true = 0;  // (t_end − t_start)/(Nt − 1)
+  double err_x = 0;    // |x_N − x(T)|∞
+  double err_v = 0;    // |(Dx)_N − ẋ(T)|∞ (first order: |(Dx)_N − ẋ(T)| too)
+  double err_x_corrected = 0;  // |x_N + M⁻¹λ4 − x(T)|∞
+  double err_p_corrected = 0;  // |−λ3 − p(T)|∞ (NaN for first order)
+  double error_estimate = 0;   // |M⁻¹λ4|∞, the built-in estimate of err_x
+  int iterations = 0;
+  double seconds = 0;
+  bool converged = false;
+  std::string reason;
+};
+
+struct ConvergenceOrders {
+  double x = 0, v = 0, x_corrected = 0, p_corrected = 0;
+};
+
+struct ConvergenceStudy {
+  std::vector<ConvergenceRow> rows;
+  ConvergenceOrders orders;          // against 1/Nt
+  ConvergenceOrders orders_true_dt;  // against 1/(Nt − 1)
+};
+
+// Fits the orders of the rows; errors at or below `floor` are round-off and
+// left out of the fit.
+inline void FitOrders(ConvergenceStudy& study, double floor) {
+  std::vector<double> h, ht, ex, ev, exc, epc;
+  for (const auto& r : study.rows) {
+    h.push_back(r.dt);
+    ht.push_back(r.dt_true);
+    ex.push_back(r.err_x);
+    ev.push_back(r.err_v);
+    exc.push_back(r.err_x_corrected);
+    epc.push_back(r.err_p_corrected);
+  }
+  auto fit = [&](const std::vector<double>& step, ConvergenceOrders& o) {
+    o.x = FitPowerLaw(step, ex, floor).order;
+    o.v = FitPowerLaw(step, ev, floor).order;
+    o.x_corrected = FitPowerLaw(step, exc, floor).order;
+    o.p_corrected = FitPowerLaw(step, epc, floor).order;
+  };
+  fit(h, study.orders);
+  fit(ht, study.orders_true_dt);
+}
+
+}  // namespace vivp
