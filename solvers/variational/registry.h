@@ -16,6 +16,7 @@
 #include "problems/exponential.h"
 #include "problems/free_fall.h"
 #include "solvers/variational/convergence.h"
+#include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp {
@@ -42,6 +43,7 @@ NamedProblem Entry(std::string name, std::string description, P problem,
   e.description = std::move(description);
   e.initial = initial;
   e.solve = [problem, initial](const Grid& g, const SolveOptions& o) {
+    if (o.path == Path::kCeresLm) return SolveIvpCeres(problem, initial, g, o);
     return SolveIvp(problem, initial, g, o);
   };
   e.exact = [problem, exact_fn](double t) {

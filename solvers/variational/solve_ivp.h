@@ -134,79 +134,113 @@ IvpSolution<Real> Finish(const P& problem,
   return s;
 }
 
+// Everything a solve needs before the critical-point search: the checked
+// grid and operators, initial data, the detected order and the initial guess.
+template <class P, class Real>
+struct Prepared {
+  static constexpr int d = P::kDim;
+  using State = std::array<Real, d>;
+  sbp::Operator<Real> D;
+  sbp::RegularizedOperator<Real> dbar;
+  State x0{}, v0{};
+  int order = 2;
+  std::vector<Real> guess;  // node-major, points x dof
+
+  Prepared(const P& problem, const InitialData& initial, const Grid& grid,
+           const SolveOptions& options)
+      : D(sbp::MakeOperator<Real>(grid.op, grid.points, Real(grid.t_start),
+                                  Real(grid.t_end))),
+        dbar(D, Real(grid.sigma0)) {
+    if (static_cast<int>(initial.x.size()) != d)
+      throw std::invalid_argument("initial position has " +
+                                  std::to_string(initial.x.size()) +
+                                  " components; the problem has " +
+                                  std::to_string(d) + " degrees of freedom");
+    CheckFinite(initial.x, "initial position");
+    CheckFinite(initial.v, "initial velocity");
+    const bool has_v = !initial.v.empty();
+    if (has_v && static_cast<int>(initial.v.size()) != d)
+      throw std::invalid_argument("initial velocity has " +
+                                  std::to_string(initial.v.size()) +
+                                  " components; the problem has " +
+                                  std::to_string(d) + " degrees of freedom");
+    for (int c = 0; c < d; ++c) {
+      x0[c] = Real(initial.x[c]);
+      v0[c] = has_v ? Real(initial.v[c]) : Real(0);
+    }
+    order = action::SystemOrder<Real>(problem, x0.data(), v0.data());
+    if (order == 2 && !has_v)
+      throw std::invalid_argument(
+          "the problem is second order (∂²L/∂v² ≠ 0) and needs an initial "
+          "velocity");
+    if (order == 1 && has_v)
+      throw std::invalid_argument(
+          "the problem is first order (∂²L/∂v² = 0): give no initial "
+          "velocity");
+    const int n = D.points();
+    if (!options.guess.empty() && options.guess.size() != std::size_t(n) * d)
+      throw std::invalid_argument("initial guess has " +
+                                  std::to_string(options.guess.size()) +
+                                  " values; need points x dof = " +
+                                  std::to_string(n * d));
+    for (double g : options.guess)
+      if (!std::isfinite(g))
+        throw std::invalid_argument("initial guess contains a non-finite value");
+    // Default guess: the initial data continued linearly.
+    guess.resize(std::size_t(n) * d);
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < d; ++c)
+        guess[i * d + c] = options.guess.empty()
+                               ? x0[c] + v0[c] * (D.t(i) - D.t(0))
+                               : Real(options.guess[i * d + c]);
+  }
+
+  // The full doubled unknowns with both paths at the guess, multipliers 0.
+  std::vector<Real> FullGuess(const action::FullSystem<P, Real>& full) const {
+    std::vector<Real> u(full.size(), Real(0));
+    for (int i = 0; i < D.points(); ++i)
+      for (int c = 0; c < d; ++c)
+        u[full.X(0, i, c)] = u[full.X(1, i, c)] = guess[i * d + c];
+    return u;
+  }
+};
+
 }  // namespace detail
 
 template <class Real = double, action::LagrangianProblem P>
 IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
                            const Grid& grid, const SolveOptions& options = {}) {
   constexpr int d = P::kDim;
-  using State = std::array<Real, d>;
-  if (static_cast<int>(initial.x.size()) != d)
-    throw std::invalid_argument("initial position has " +
-                                std::to_string(initial.x.size()) +
-                                " components; the problem has " +
-                                std::to_string(d) + " degrees of freedom");
-  detail::CheckFinite(initial.x, "initial position");
-  detail::CheckFinite(initial.v, "initial velocity");
-  const auto D = sbp::MakeOperator<Real>(grid.op, grid.points, Real(grid.t_start),
-                                         Real(grid.t_end));
-  const sbp::RegularizedOperator<Real> dbar(D, Real(grid.sigma0));
-  State x0{}, v0{};
-  for (int c = 0; c < d; ++c) x0[c] = Real(initial.x[c]);
-  const bool has_v = !initial.v.empty();
-  if (has_v && static_cast<int>(initial.v.size()) != d)
-    throw std::invalid_argument("initial velocity has " +
-                                std::to_string(initial.v.size()) +
-                                " components; the problem has " +
-                                std::to_string(d) + " degrees of freedom");
-  for (int c = 0; c < d && has_v; ++c) v0[c] = Real(initial.v[c]);
-  const int order = action::SystemOrder<Real>(problem, x0.data(), v0.data());
-  if (order == 2 && !has_v)
-    throw std::invalid_argument(
-        "the problem is second order (∂²L/∂v² ≠ 0) and needs an initial "
-        "velocity");
-  if (order == 1 && has_v)
-    throw std::invalid_argument(
-        "the problem is first order (∂²L/∂v² = 0): give no initial velocity");
-
-  const action::FullSystem<P, Real> full(problem, dbar, x0, v0, order);
-  const int n = D.points();
-  // Initial guess: the initial data continued linearly, or the caller's.
-  auto guess = [&](int i, int c) -> Real {
-    if (!options.guess.empty()) return Real(options.guess[i * d + c]);
-    return x0[c] + v0[c] * (D.t(i) - D.t(0));
-  };
-  if (!options.guess.empty() && options.guess.size() != std::size_t(n) * d)
-    throw std::invalid_argument("initial guess has " +
-                                std::to_string(options.guess.size()) +
-                                " values; need points x dof = " +
-                                std::to_string(n * d));
-  std::vector<Real> u(full.size(), Real(0));
+  const detail::Prepared<P, Real> prep(problem, initial, grid, options);
+  const int n = prep.D.points();
+  const action::FullSystem<P, Real> full(problem, prep.dbar, prep.x0, prep.v0,
+                                         prep.order);
+  std::vector<Real> u;
   solvers::NewtonReport report;
   if (options.path == Path::kReducedNewton) {
-    const action::ReducedSystem<P, Real> reduced(problem, dbar, x0, v0, order);
+    const action::ReducedSystem<P, Real> reduced(problem, prep.dbar, prep.x0,
+                                                 prep.v0, prep.order);
     std::vector<Real> y(reduced.size(), Real(0));
     for (int i = 0; i < n; ++i)
-      for (int c = 0; c < d; ++c) y[reduced.X(i, c)] = guess(i, c);
+      for (int c = 0; c < d; ++c) y[reduced.X(i, c)] = prep.guess[i * d + c];
     report = solvers::Newton(reduced, y, options.newton);
+    u.assign(full.size(), Real(0));
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < d; ++c)
         u[full.X(0, i, c)] = u[full.X(1, i, c)] = y[reduced.X(i, c)];
     for (int c = 0; c < d; ++c) {
       u[full.Lambda3(c)] = y[reduced.Lambda3(c)];
-      if (order == 2) u[full.Lambda4(c)] = y[reduced.Lambda4(c)];
+      if (prep.order == 2) u[full.Lambda4(c)] = y[reduced.Lambda4(c)];
     }
   } else if (options.path == Path::kFullNewton) {
-    for (int i = 0; i < n; ++i)
-      for (int c = 0; c < d; ++c)
-        u[full.X(0, i, c)] = u[full.X(1, i, c)] = guess(i, c);
+    u = prep.FullGuess(full);
     report = solvers::Newton(full, u, options.newton);
   } else {
     throw std::invalid_argument(
-        "SolveIvp handles the Newton paths; use SolveIvpCeres for "
-        "Levenberg-Marquardt");
+        "SolveIvp runs the Newton paths; Levenberg-Marquardt is SolveIvpCeres "
+        "(solvers/variational/ceres_lm.h)");
   }
-  return detail::Finish(problem, dbar, full, u, report, options.path);
+  return detail::Finish(problem, prep.dbar, full, u, report, options.path);
 }
 
 }  // namespace vivp
