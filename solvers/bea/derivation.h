@@ -1,0 +1,96 @@
+// Blended backward error analysis (seed 003, Sections 3 and 5): from a
+// method's discrete Lagrangian to the modified equation, the modified
+// Hamiltonian and symplectic form on the 1-jet (x, x'), Noether charges and,
+// where it exists, a first-order modified Lagrangian.
+//
+//   auto r = vivp::bea::Derive(vivp::bea::MakeLmm4(ScalarMatrix(alpha, 2)),
+//                              {.order = 4});
+//   r.f[0]        // x1'' = f_0 + h^2 f_2 + h^4 f_4 (Series)
+//   r.hamiltonian // H_0 + h^2 H_2 + h^4 H_4
+//   r.omega[a][b] // in the frame (x_1..x_d, x'_1..x'_d); omega z' = grad H
+//
+// Steps (all truncated at h^order, everything polynomial):
+//   1. L_h = sum_p h^p L_p on the jet (lagrangians.h);
+//   2. Euler-Lagrange E_p = sum_k (-D_t)^k dL_p/dx^(k); odd p vanish;
+//   3. x'' = grad U + sum_{p>=1} h^p E_p, higher derivatives replaced by
+//      derivatives of the current x'' = f in fixed-point sweeps, each gaining
+//      h^2 (Reduction);
+//   4. Ostrogradsky: q_k = x^(k-1), p_k = sum_j (-D_t)^j dL/dx^(k+j),
+//      H = sum_k p_k . x^(k) - L, reduced to the 1-jet;
+//   5. omega = sum_k dp_k ^ dq_k pulled back to the 1-jet (eq. (3.3));
+//   6. Noether charge of a linear symmetry x -> exp(sG) x: sum_k p_k . G q_k;
+//   7. if the x-x block of omega vanishes (Proposition 6.1): the momentum
+//      P_i with dP_i/dx'_j = omega[x'_j][x_i], P(x, 0) = 0 (fibre homotopy),
+//      and L_mod = P . x' - H.
+//
+// Self-checks (SelfCheck below) run by default; Derive throws
+// std::runtime_error when one fails.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/bea/jet_space.h"
+#include "solvers/bea/method.h"
+#include "solvers/bea/series.h"
+
+namespace vivp::bea {
+
+struct DeriveOptions {
+  int order = 4;  // even, >= 2: truncation h^order
+  PotentialModel model = PotentialModel::kGeneric;
+  // Generator G (d x d, antisymmetric for rotations) of a linear symmetry
+  // whose Noether charge is wanted. The Lagrangian must be invariant.
+  std::optional<GiNaC::matrix> symmetry;
+  bool self_checks = true;
+  bool throw_on_failed_check = true;
+};
+
+struct SelfCheck {
+  std::string name;
+  bool passed = false;
+  // Lowest order at which the identity fails (-1 if it holds).
+  int failing_order = -1;
+};
+
+// Highest order Derive accepts in dimension `dim` (acceptance: bounded time).
+int MaxOrder(int dim);
+
+struct BeaResult {
+  std::shared_ptr<JetSpace> jet;
+  Method method;
+  int order = 0;
+  std::vector<GiNaC::ex> lagrangian;                   // L_p on the jet
+  std::vector<std::vector<GiNaC::ex>> euler_lagrange;  // E_p, per component
+  std::vector<Series> f;            // modified equation x_i'' = f_i
+  int sweeps = 0;
+  Series hamiltonian;
+  std::vector<std::vector<Series>> omega;  // 2d x 2d
+  std::optional<Series> charge;
+  // First-order modified Lagrangian in the original variables, if the x-x
+  // block of omega vanishes identically.
+  std::optional<Series> modified_lagrangian;
+  std::vector<SelfCheck> checks;
+  double seconds = 0;  // wall time of the derivation (without checks)
+  // Wall time per stage (name, seconds), for benchmarks.
+  std::vector<std::pair<std::string, double>> stage_seconds;
+  double check_seconds = 0;
+
+  // Convenience: the 1-jet coordinates.
+  GiNaC::symbol x(int i) const { return jet->X(i, 0); }
+  GiNaC::symbol v(int i) const { return jet->X(i, 1); }
+};
+
+// Throws std::invalid_argument for an odd order, an order below 2, or one
+// above MaxOrder(dim) (with the time it would take and how to proceed).
+BeaResult Derive(const Method& method, const DeriveOptions& options);
+
+// The Lagrangian L(x, x') (a series) generates the modified equation: its
+// Euler-Lagrange equations with x'' = f vanish to the truncation order.
+SelfCheck CheckLagrangianGeneratesF(BeaResult& r, const Series& lagrangian);
+
+}  // namespace vivp::bea
