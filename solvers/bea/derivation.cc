@@ -241,12 +241,20 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
     r.charge = I;
   }
 
-  // First-order modified Lagrangian where the x-x block of omega vanishes.
-  bool xx_zero = true;
-  for (int a = 0; a < d && xx_zero; ++a)
-    for (int b = a + 1; b < d && xx_zero; ++b)
-      xx_zero = r.omega[a][b].IsZero();
-  if (xx_zero) {
+  // First-order modified Lagrangian (Proposition 6.1): it exists when the
+  // fibres x = const are Lagrangian for omega (the x'-x' block vanishes); the
+  // fibre homotopy below also needs the x-x block to vanish at x' = 0.
+  bool lagrangian_fibres = true;
+  GiNaC::exmap at_rest;
+  for (int i = 0; i < d; ++i) at_rest[jet.X(i, 1)] = 0;
+  for (int a = 0; a < d && lagrangian_fibres; ++a)
+    for (int b = a + 1; b < d && lagrangian_fibres; ++b) {
+      lagrangian_fibres = r.omega[d + a][d + b].IsZero();
+      for (int p = 0; p <= N && lagrangian_fibres; ++p)
+        lagrangian_fibres =
+            GiNaC::expand(r.omega[a][b][p].subs(at_rest)).is_zero();
+    }
+  if (lagrangian_fibres) {
     Series L = r.hamiltonian * GiNaC::ex(-1);
     for (int i = 0; i < d; ++i) {
       // P_i(x, v) = int_0^1 sum_j omega[v_j][x_i](x, t v) v_j dt: a monomial of

@@ -19,9 +19,12 @@
 //      H = sum_k p_k . x^(k) - L, reduced to the 1-jet;
 //   5. omega = sum_k dp_k ^ dq_k pulled back to the 1-jet (eq. (3.3));
 //   6. Noether charge of a linear symmetry x -> exp(sG) x: sum_k p_k . G q_k;
-//   7. if the x-x block of omega vanishes (Proposition 6.1): the momentum
-//      P_i with dP_i/dx'_j = omega[x'_j][x_i], P(x, 0) = 0 (fibre homotopy),
-//      and L_mod = P . x' - H.
+//   7. if the x'-x' block of omega vanishes (Proposition 6.1: the fibres are
+//      Lagrangian) and the x-x block vanishes at x' = 0: the momentum P_i
+//      with dP_i/dx'_j = omega[x'_j][x_i], P(x, 0) = 0 (fibre homotopy), and
+//      L_mod = P . x' - H. For (4.1) with A = alpha I this holds at every
+//      order; for a general symmetric A the x'-x' block is nonzero from h^4 on
+//      (at h^2 only the x-x block c J differs).
 //
 // Self-checks (SelfCheck below) run by default; Derive throws
 // std::runtime_error when one fails.
@@ -71,8 +74,8 @@ struct BeaResult {
   Series hamiltonian;
   std::vector<std::vector<Series>> omega;  // 2d x 2d
   std::optional<Series> charge;
-  // First-order modified Lagrangian in the original variables, if the x-x
-  // block of omega vanishes identically.
+  // First-order modified Lagrangian in the original variables, where it
+  // exists (step 7).
   std::optional<Series> modified_lagrangian;
   std::vector<SelfCheck> checks;
   double seconds = 0;  // wall time of the derivation (without checks)

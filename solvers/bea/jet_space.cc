@@ -83,8 +83,15 @@ GiNaC::symbol JetSpace::V(int k) {
     throw std::logic_error("V_k symbols belong to the radial potential model");
   auto it = radial_.find(k);
   if (it != radial_.end()) return it->second;
-  std::string name = "V" + std::to_string(k);
-  std::string tex = k == 0 ? "V" : "V^{(" + std::to_string(k) + ")}";
+  // Built by appending: GCC 12 reports a false -Wrestrict for
+  // "literal" + std::string here (GCC bug 105329).
+  std::string name = "V", tex = "V";
+  name += std::to_string(k);
+  if (k > 0) {
+    tex += "^{(";
+    tex += std::to_string(k);
+    tex += ")}";
+  }
   GiNaC::symbol s(name, tex);
   radial_.emplace(k, s);
   info_[s] = SymbolInfo{SymbolInfo::kRadialPotential, 0, k, {}};
