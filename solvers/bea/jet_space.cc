@@ -66,7 +66,8 @@ GiNaC::symbol JetSpace::U(const std::vector<int>& a) {
   for (int ai : a) order += ai;
   std::string name = "U", tex = "U";
   if (order > 0) {
-    name += "_" + MultiName(a);
+    name += '_';
+    name += MultiName(a);
     tex += "_{";
     for (int i = 0; i < dim_; ++i)
       for (int r = 0; r < a[i]; ++r) tex += std::to_string(i + 1);
