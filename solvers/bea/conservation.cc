@@ -93,7 +93,7 @@ Sweep ConservationSweep(const BeaResult& r, const ModifiedQuantities& q,
   }
   std::vector<double> hs;
   for (const auto& row : sweep.rows) hs.push_back(row.h);
-  for (std::size_t c = 0; c < sweep.names.size(); ++c) {
+  for (std::size_t c = 0; c < sweep.names.size() && hs.size() >= 2; ++c) {
     std::vector<double> y;
     for (const auto& row : sweep.rows) y.push_back(row.max_deviation[c]);
     sweep.slopes.push_back(LogLogSlope(hs, y));

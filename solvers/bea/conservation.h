@@ -47,7 +47,7 @@ struct SweepRow {
 struct Sweep {
   std::vector<std::string> names;
   std::vector<SweepRow> rows;
-  std::vector<double> slopes;  // least-squares log-log slope per name
+  std::vector<double> slopes;  // log-log slope per name (with >= 2 rows)
 };
 
 Sweep ConservationSweep(const BeaResult& r, const ModifiedQuantities& q,
