@@ -142,10 +142,17 @@ class FullSystem {
   // ∇²S entry by entry into sink.Add(row, col, value).
   template <class Sink>
   void Jacobian(const Real* u, Sink& sink) const {
+    Jacobian(u, sink, 0, n_);
+  }
+
+  // Only the node terms of nodes [node_begin, node_end) plus the multiplier
+  // entries (see ReducedSystem::Jacobian).
+  template <class Sink>
+  void Jacobian(const Real* u, Sink& sink, int node_begin, int node_end) const {
     std::vector<Real> x[2][d], v[2][d];
     Paths(u, x, v);
     const auto& D = dbar_.base();
-    for (int i = 0; i < n_; ++i) {
+    for (int i = node_begin; i < node_end; ++i) {
       Real z[4 * d];
       NodeValues(x, v, i, z);
       const Eigen::Matrix<Real, 4 * d, 4 * d> hess =

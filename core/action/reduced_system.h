@@ -107,10 +107,18 @@ class ReducedSystem {
   // same position are summed by the sink.
   template <class Sink>
   void Jacobian(const Real* y, Sink& sink) const {
+    Jacobian(y, sink, 0, n_);
+  }
+
+  // Only the node terms of nodes [node_begin, node_end) (plus the multiplier
+  // and constraint entries): the interior pattern repeats, so the ends and one
+  // interior stretch reveal the band without the cost of a full assembly.
+  template <class Sink>
+  void Jacobian(const Real* y, Sink& sink, int node_begin, int node_end) const {
     std::vector<Real> x[d], v[d];
     Paths(y, x, v);
     const auto& D = dbar_.base();
-    for (int i = 0; i < n_; ++i) {
+    for (int i = node_begin; i < node_end; ++i) {
       Real p[2 * d], m[2 * d];
       for (int c = 0; c < d; ++c) {
         p[c] = x[c][i];

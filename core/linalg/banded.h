@@ -86,4 +86,21 @@ struct BandwidthProbe {
   }
 };
 
+// The band of a System's Jacobian whose per-node pattern repeats away from
+// the ends (true of every SBP action): probing the first and last `margin`
+// nodes and one interior node is enough.
+template <class System, class Real>
+BandwidthProbe ProbeBand(const System& system, const Real* y, int points,
+                         int margin) {
+  BandwidthProbe probe;
+  if (points <= 2 * margin + 1) {
+    system.Jacobian(y, probe, 0, points);
+  } else {
+    system.Jacobian(y, probe, 0, margin);
+    system.Jacobian(y, probe, points / 2, points / 2 + 1);
+    system.Jacobian(y, probe, points - margin, points);
+  }
+  return probe;
+}
+
 }  // namespace vivp::linalg

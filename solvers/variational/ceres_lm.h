@@ -113,8 +113,8 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   const System full(problem, prep.dbar, prep.x0, prep.v0, prep.order);
   std::vector<double> u = prep.FullGuess(full);
 
-  linalg::BandwidthProbe probe;
-  full.Jacobian(u.data(), probe);
+  const linalg::BandwidthProbe probe =
+      linalg::ProbeBand(full, u.data(), full.points(), 32);
   std::vector<double> g(full.size());
   full.Residual(u.data(), g.data());
   const double initial_gradient = solvers::detail::MaxAbs(g);

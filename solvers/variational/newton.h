@@ -3,6 +3,9 @@
 //
 // A System provides
 //   int size() const;
+//   int points() const;                               // time nodes
+//   template <class Sink> void Jacobian(const Real* y, Sink& sink,
+//                                       int node_begin, int node_end) const;
 //   void Residual(const Real* y, Real* f) const;      // matrix-free
 //   template <class Sink> void Jacobian(const Real* y, Sink& sink) const;
 //
@@ -15,7 +18,9 @@
 //
 // Stopping (formulation §1.7: never on an absolute residual):
 //   converged   the last correction is at round-off, |δ|∞ <= tol·max(1, |y|∞)
-//               with tol = step_tolerance (default 32 eps), or the corrections
+//               with tol = step_tolerance (default 32 eps); or two refinement
+//               steps contract with ratio θ < ½ and θ/(1−θ)|δ|, the estimated
+//               remaining error, is below that bound; or the corrections
 //               stopped shrinking (stagnation) while already below sqrt(eps);
 //   failed      non-finite residual, singular Jacobian, stagnation above
 //               sqrt(eps), or the iteration limit.
@@ -88,8 +93,9 @@ NewtonReport Newton(const System& system, std::vector<Real>& y,
                                               : Real(32) * eps;
   const Real stagnation_floor = std::sqrt(eps);
 
-  linalg::BandwidthProbe probe;
-  system.Jacobian(y.data(), probe);
+  // Closure rows reach at most twice the widest boundary row into the grid.
+  const linalg::BandwidthProbe probe =
+      linalg::ProbeBand(system, y.data(), system.points(), 32);
   report.kl = probe.kl;
   report.ku = probe.ku;
   linalg::BandedMatrix<Real> jac(n, probe.kl, probe.ku);
@@ -138,6 +144,14 @@ NewtonReport Newton(const System& system, std::vector<Real>& y,
       const Real scale = std::max(Real(1), detail::MaxAbs(y));
       if (step <= tol * scale)
         return finish(true, "correction at round-off");
+      // Two refinement steps in a row give the contraction θ of the
+      // simplified iteration; the error left is about θ/(1−θ)·step.
+      const Real theta = step / previous_step;
+      if (r >= 2 && theta < Real(0.5) &&
+          theta / (Real(1) - theta) * step <= tol * scale)
+        return finish(true, "refinement converged (estimated remaining error " +
+                                std::to_string(double(theta / (1 - theta) * step)) +
+                                ")");
       if (step >= Real(0.5) * previous_step) {
         // Corrections stopped shrinking: round-off if already tiny.
         if (step <= stagnation_floor * scale)
