@@ -4,6 +4,7 @@
 // argument; a blow-up is a status (kUnstable), never an exception or NaN.
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
