@@ -21,6 +21,7 @@ using Runner = std::function<int()>;
 
 Runner AddSpectrumCommand(CLI::App& app);
 Runner AddConvergeCommand(CLI::App& app);
+Runner AddBeaCommand(CLI::App& app);
 
 // Refuses to write into an existing non-empty directory unless force is set,
 // so nothing a user keeps there is overwritten without being asked.

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   const std::vector<std::pair<std::string, vivp::app::Runner>> commands = {
       {"spectrum", vivp::app::AddSpectrumCommand(app)},
       {"converge", vivp::app::AddConvergeCommand(app)},
+      {"bea", vivp::app::AddBeaCommand(app)},
   };
 
   try {
