@@ -328,3 +328,18 @@ BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
   if (n == "damped") check(problems::DampedOscillator{}, {{1.0}, {0.0}});
   if (n == "coupled") check(problems::CoupledOscillators{}, {{1.0, 0.0}, {0.0, 0.3}});
 }
+
+BOOST_DATA_TEST_CASE(NonlinearSystems_PendulumAndKeplerConvergeAtSbp42Orders,
+                     bdata::make({"pendulum", "kepler"}), name) {
+  // d = 1 and d = 2 nonlinear systems against their exact solutions
+  // (Jacobi elliptic functions; Kepler's equation solved to round-off).
+  Grid g;
+  g.op = "sbp42";
+  const auto s = RunConvergence(FindProblem(name), g, {32, 64, 128, 256, 512}, {});
+  for (const auto& r : s.rows) BOOST_TEST(r.converged, r.points << " " << r.reason);
+  BOOST_TEST(std::abs(s.orders.x - 3.0) <= 0.15, "x order " << s.orders.x);
+  BOOST_TEST(std::abs(s.orders.x_corrected - 4.0) <= 0.2,
+             "corrected order " << s.orders.x_corrected);
+  BOOST_TEST(std::abs(s.orders.p_corrected - 4.0) <= 0.2,
+             "momentum order " << s.orders.p_corrected);
+}

@@ -15,6 +15,8 @@
 #include "problems/damped_oscillator.h"
 #include "problems/exponential.h"
 #include "problems/free_fall.h"
+#include "problems/kepler.h"
+#include "problems/pendulum.h"
 #include "solvers/variational/convergence.h"
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/solve_ivp.h"
@@ -96,6 +98,23 @@ inline const std::vector<NamedProblem>& Registry() {
           const auto s = p.Exact(t);
           return ExactState{{s.x[0], s.x[1]}, {s.v[0], s.v[1]}, {}};
         }));
+    // Canonical systems with L = ½|ẋ|² − V: the momentum is the velocity.
+    auto canonical = [](const auto& p, double t) {
+      const std::vector<double> y = p.Exact(t);
+      const std::size_t d = y.size() / 2;
+      return ExactState{{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
+    };
+    auto initial = [](const auto& p) {
+      const std::vector<double> y = p.Initial();
+      const std::size_t d = y.size() / 2;
+      return InitialData{{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}};
+    };
+    r.push_back(detail::Entry("pendulum",
+                              "pendulum, L = ½ẋ² + cos x, x(0) = 0, ẋ(0) = 1",
+                              Pendulum{}, initial(Pendulum{}), canonical));
+    r.push_back(detail::Entry(
+        "kepler", "planar Kepler e = 0.6 from pericentre (d = 2, period 2π)",
+        Kepler{}, initial(Kepler{}), canonical));
     return r;
   }();
   return problems;
