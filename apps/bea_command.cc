@@ -92,12 +92,14 @@ bea::Method MakeMethod(BeaOptions& o, GiNaC::symtab& symbols) {
   if (!o.matrix.empty()) {
     const auto a = SplitCommas(o.matrix);
     if (a.size() != 3)
-      throw UsageError("--matrix takes the three entries a11,a12,a22 of a "
-                       "symmetric 2x2 matrix, got '" + o.matrix + "'");
+      throw UsageError(
+          "--matrix takes the three entries a11,a12,a22 of a "
+          "symmetric 2x2 matrix, got '" +
+          o.matrix + "'");
     if (o.dim != 2) throw UsageError("--matrix needs --dim 2");
-    return bea::MakeLmm4(bea::SymmetricMatrix2(ParseCoefficient(a[0], symbols),
-                                               ParseCoefficient(a[1], symbols),
-                                               ParseCoefficient(a[2], symbols)));
+    return bea::MakeLmm4(bea::SymmetricMatrix2(
+        ParseCoefficient(a[0], symbols), ParseCoefficient(a[1], symbols),
+        ParseCoefficient(a[2], symbols)));
   }
   const GiNaC::ex alpha =
       ParseCoefficient(o.alpha.empty() ? "alpha" : o.alpha, symbols);
@@ -111,8 +113,9 @@ bea::DeriveOptions Options(const BeaOptions& o, bool radial) {
   d.order = o.order;
   if (radial) {
     if (o.dim != 2)
-      throw UsageError("--radial (U = V(|x|^2)/2 and the angular momentum) "
-                       "needs --dim 2");
+      throw UsageError(
+          "--radial (U = V(|x|^2)/2 and the angular momentum) "
+          "needs --dim 2");
     d.model = bea::PotentialModel::kRadial;
     GiNaC::matrix g(2, 2);
     g(0, 1) = -1;
@@ -160,7 +163,8 @@ std::string ShowSeries(const Series& s, const GiNaC::exmap& w,
     if (p == 0)
       out += Show(c, format);
     else
-      out += (format == "latex" ? "h^{" + std::to_string(p) + "} \\left(" : "h^" + std::to_string(p) + " (") +
+      out += (format == "latex" ? "h^{" + std::to_string(p) + "} \\left("
+                                : "h^" + std::to_string(p) + " (") +
              Show(c, format) + (format == "latex" ? "\\right)" : ")");
   }
   return out.empty() ? "0" : out;
@@ -193,8 +197,10 @@ int RunDerive(BeaOptions o) {
     return (a < d ? "x" : "v") + std::to_string(a % d + 1);
   };
   if (o.format == "json") {
-    nlohmann::json j = {{"method", method.name}, {"dim", d},
-                        {"order", r.order},      {"seconds", r.seconds}};
+    nlohmann::json j = {{"method", method.name},
+                        {"dim", d},
+                        {"order", r.order},
+                        {"seconds", r.seconds}};
     for (int i = 0; i < d; ++i)
       j["modified_equation"].push_back(SeriesJson(r.f[i], w));
     j["hamiltonian"] = SeriesJson(r.hamiltonian, w);
@@ -226,8 +232,7 @@ int RunDerive(BeaOptions o) {
   if (r.charge)
     std::cout << "I (rotation) = " << ShowSeries(*r.charge, w, f) << "\n";
   if (r.modified_lagrangian)
-    std::cout << "L_mod = " << ShowSeries(*r.modified_lagrangian, w, f)
-              << "\n";
+    std::cout << "L_mod = " << ShowSeries(*r.modified_lagrangian, w, f) << "\n";
   else
     std::cout << "L_mod: none in the original variables (the v-v block of "
                  "omega is nonzero, Proposition 6.1)\n";
@@ -247,25 +252,35 @@ int RunVerify(BeaOptions o) {
     try {
       return bea::NumericCoefficients(method);
     } catch (const std::invalid_argument&) {
-      throw UsageError("verify needs numeric coefficients: give --alpha or "
-                       "--matrix as numbers");
+      throw UsageError(
+          "verify needs numeric coefficients: give --alpha or "
+          "--matrix as numbers");
     }
   }();
   const auto stability = bea::CheckStability(coefficients);
   if (!stability.stable)
     std::cerr << "vivp: warning: " << stability.reason << "\n";
   if (o.potential.empty()) o.potential = o.dim == 1 ? "pendulum" : "gaussian";
-  const bool radial = o.dim == 2 && o.matrix.empty() && o.potential == "gaussian";
+  const bool radial =
+      o.dim == 2 && o.matrix.empty() && o.potential == "gaussian";
   const auto r = bea::Derive(method, Options(o, radial));
   const auto potential = bea::MakePotential(o.potential, o.dim, r.jet->model());
   const bea::ModifiedQuantities q(r, *potential);
   bea::ConservationSetup s;
-  std::vector<double> x0 = o.x0.empty() ? std::vector<double>{} : Numbers(o.x0, "--x0");
-  std::vector<double> v0 = o.v0.empty() ? std::vector<double>{} : Numbers(o.v0, "--v0");
-  if (x0.empty()) x0 = o.dim == 2 ? std::vector<double>{1, -1} : std::vector<double>(o.dim, 1.0);
-  if (v0.empty()) v0 = o.dim == 2 ? std::vector<double>{0.1, -0.2} : std::vector<double>(o.dim, 0.0);
-  if (static_cast<int>(x0.size()) != o.dim || static_cast<int>(v0.size()) != o.dim)
-    throw UsageError("--x0 and --v0 need " + std::to_string(o.dim) + " numbers");
+  std::vector<double> x0 =
+      o.x0.empty() ? std::vector<double>{} : Numbers(o.x0, "--x0");
+  std::vector<double> v0 =
+      o.v0.empty() ? std::vector<double>{} : Numbers(o.v0, "--v0");
+  if (x0.empty())
+    x0 = o.dim == 2 ? std::vector<double>{1, -1}
+                    : std::vector<double>(o.dim, 1.0);
+  if (v0.empty())
+    v0 = o.dim == 2 ? std::vector<double>{0.1, -0.2}
+                    : std::vector<double>(o.dim, 0.0);
+  if (static_cast<int>(x0.size()) != o.dim ||
+      static_cast<int>(v0.size()) != o.dim)
+    throw UsageError("--x0 and --v0 need " + std::to_string(o.dim) +
+                     " numbers");
   s.x0 = Eigen::Map<Eigen::VectorXd>(x0.data(), o.dim);
   s.v0 = Eigen::Map<Eigen::VectorXd>(v0.data(), o.dim);
   s.t_end = o.t_end;
@@ -280,7 +295,8 @@ int RunVerify(BeaOptions o) {
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   human << "# " << method.name << ", " << o.potential << ", d = " << o.dim
         << ", T = " << o.t_end << ", " << o.differences
-        << "th-order differences; max |deviation|\n" << std::setw(8) << "h";
+        << "th-order differences; max |deviation|\n"
+        << std::setw(8) << "h";
   for (const auto& n : sweep.names) human << std::setw(12) << n;
   human << "\n" << std::setprecision(3);
   for (const auto& row : sweep.rows) {
@@ -294,8 +310,10 @@ int RunVerify(BeaOptions o) {
     human << "\n";
   }
   if (!o.json.empty()) {
-    nlohmann::json j = {{"method", method.name}, {"potential", o.potential},
-                        {"dim", o.dim}, {"t_end", o.t_end},
+    nlohmann::json j = {{"method", method.name},
+                        {"potential", o.potential},
+                        {"dim", o.dim},
+                        {"t_end", o.t_end},
                         {"difference_order", o.differences},
                         {"stable", stability.stable}};
     for (const auto& row : sweep.rows) {
@@ -327,7 +345,8 @@ void AddMethodOptions(CLI::App* cmd, BeaOptions& o) {
   cmd->add_option("--matrix", o.matrix,
                   "lmm4 with the symmetric A = [[a11, a12], [a12, a22]]: "
                   "a11,a12,a22 (implies --dim 2)");
-  cmd->add_option("--dim", o.dim, "dimension d (default 1, or 2 with --matrix)");
+  cmd->add_option("--dim", o.dim,
+                  "dimension d (default 1, or 2 with --matrix)");
   cmd->add_option("--order", o.order, "truncation order K (even): h^K")
       ->capture_default_str();
 }
@@ -337,8 +356,9 @@ void AddMethodOptions(CLI::App* cmd, BeaOptions& o) {
 Runner AddBeaCommand(CLI::App& app) {
   auto o = std::make_shared<BeaOptions>();
   CLI::App* bea = app.add_subcommand(
-      "bea", "Backward error analysis (seed 003): modified equations, "
-             "Hamiltonians, symplectic forms and charges");
+      "bea",
+      "Backward error analysis (seed 003): modified equations, "
+      "Hamiltonians, symplectic forms and charges");
   bea->require_subcommand(1);
   CLI::App* derive = bea->add_subcommand(
       "derive", "Print the modified equation, H_mod, omega, charges, L_mod");
@@ -349,15 +369,17 @@ Runner AddBeaCommand(CLI::App& app) {
   derive->add_option("--format", o->format, "text, latex or json")
       ->capture_default_str();
   CLI::App* verify = bea->add_subcommand(
-      "verify", "Run the method and measure the conservation of H_mod and "
-                "I_mod over a step-size sweep");
+      "verify",
+      "Run the method and measure the conservation of H_mod and "
+      "I_mod over a step-size sweep");
   AddMethodOptions(verify, *o);
   verify->add_option("--steps", o->steps, "step sizes h1,h2,...")->required();
   verify->add_option("--t-end", o->t_end, "end time T")
       ->check(FiniteNumber())
       ->capture_default_str();
-  verify->add_option("--differences", o->differences,
-                     "order of the central differences for x' (2..12, even)")
+  verify
+      ->add_option("--differences", o->differences,
+                   "order of the central differences for x' (2..12, even)")
       ->check(CLI::IsMember({2, 4, 6, 8, 10, 12}))
       ->capture_default_str();
   verify->add_option("--potential", o->potential,

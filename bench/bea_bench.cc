@@ -63,8 +63,8 @@ int main() {
           checks = r.check_seconds;
         },
         c.order >= 6 ? 1 : 3);
-    std::printf("%-36s   h^%-2d %12.4f %12.4f\n", c.label, c.order,
-                t - checks, checks);
+    std::printf("%-36s   h^%-2d %12.4f %12.4f\n", c.label, c.order, t - checks,
+                checks);
   }
 
   // Evaluation rate: H_mod to h^4 and I to h^4 at points of a trajectory.
@@ -95,7 +95,8 @@ int main() {
     });
     return n / t;
   };
-  std::printf("\n# Evaluation rate (lmm4, A = -0.2 I, d = 2, U = exp(-|x|^2/2))\n");
+  std::printf(
+      "\n# Evaluation rate (lmm4, A = -0.2 I, d = 2, U = exp(-|x|^2/2))\n");
   std::printf("%-44s %14s\n", "quantity", "evals/s");
   std::printf("%-44s %14.3g\n", "H_mod to h^4 (radial model)",
               rate([&](const double* x, const double* v) {
@@ -122,5 +123,6 @@ int main() {
   s.t_end = 1500;
   const double t = vivp::bench::MedianSeconds(
       [&] { Deviations(r, q, potential, s, 0.15); }, 3);
-  std::printf("\n# Fig. 1 run (10^4 steps, 6 quantities per step): %.3f s\n", t);
+  std::printf("\n# Fig. 1 run (10^4 steps, 6 quantities per step): %.3f s\n",
+              t);
 }

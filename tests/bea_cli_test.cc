@@ -2,13 +2,13 @@
 // the problem and the fix; derive prints the formulas; verify writes the
 // promised JSON keys.
 #define BOOST_TEST_MODULE bea_cli
-#include <boost/test/unit_test.hpp>
+#include <sys/wait.h>
 
 #include <array>
+#include <boost/test/unit_test.hpp>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
@@ -20,8 +20,7 @@ struct Run {
 Run Vivp(const std::string& args) {
   const std::string err_file =
       "/tmp/vivp_bea_cli_test_" + std::to_string(::getpid()) + ".err";
-  const std::string cmd =
-      std::string(VIVP_EXE) + " " + args + " 2>" + err_file;
+  const std::string cmd = std::string(VIVP_EXE) + " " + args + " 2>" + err_file;
   FILE* pipe = popen(cmd.c_str(), "r");
   BOOST_REQUIRE(pipe != nullptr);
   std::string out;

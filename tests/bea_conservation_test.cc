@@ -4,7 +4,6 @@
 // GiNaC's own.
 #define BOOST_TEST_MODULE bea_conservation
 #include <boost/test/unit_test.hpp>
-
 #include <cmath>
 #include <limits>
 
@@ -100,7 +99,8 @@ BOOST_AUTO_TEST_CASE(StormerVerletPendulum_ModifiedHamiltonian_FallsAsH6) {
   BOOST_TEST(std::abs(Slope(sweep, "H0") - 2) <= 0.2);
 }
 
-BOOST_AUTO_TEST_CASE(StormerVerletPendulum_ModifiedHamiltonian_DoesNotDriftOver1e5Steps) {
+BOOST_AUTO_TEST_CASE(
+    StormerVerletPendulum_ModifiedHamiltonian_DoesNotDriftOver1e5Steps) {
   auto r = Derive(MakeStormerVerlet(1), Options(4, PotentialModel::kGeneric));
   Pendulum potential;
   ModifiedQuantities q(r, potential);

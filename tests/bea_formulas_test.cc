@@ -68,16 +68,17 @@ GiNaC::matrix M34(const GiNaC::matrix& A) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(StormerVerlet_ModifiedHamiltonianFormAndLagrangian_MatchAppendixA) {
+BOOST_AUTO_TEST_CASE(
+    StormerVerlet_ModifiedHamiltonianFormAndLagrangian_MatchAppendixA) {
   auto r = Derive(MakeStormerVerlet(1), AtOrder(4));
   JetSpace& jet = *r.jet;
   // Formulation.md writes W = -U; W^(k) = -U_k.
   const ex W1 = -jet.U({1}), W2 = -jet.U({2}), W3 = -jet.U({3}),
            W4 = -jet.U({4}), W = -jet.U({0}), v = r.v(0);
-  const ex H[] = {v * v / 2 + W, 0,
-                  -numeric(1, 24) * (W1 * W1 + 2 * W2 * v * v), 0,
-                  -numeric(1, 720) * (3 * W1 * W1 * W2 + 2 * W2 * W2 * v * v +
-                                      6 * W1 * W3 * v * v - 3 * W4 * v * v * v * v)};
+  const ex H[] = {
+      v * v / 2 + W, 0, -numeric(1, 24) * (W1 * W1 + 2 * W2 * v * v), 0,
+      -numeric(1, 720) * (3 * W1 * W1 * W2 + 2 * W2 * W2 * v * v +
+                          6 * W1 * W3 * v * v - 3 * W4 * v * v * v * v)};
   const ex f[] = {1, 0, -W2 / 6, 0,
                   -numeric(1, 180) * (W2 * W2 + 3 * W1 * W3 - 3 * W4 * v * v)};
   const ex L[] = {v * v / 2 - W, 0, numeric(1, 24) * (W1 * W1 - 2 * W2 * v * v),
@@ -94,7 +95,8 @@ BOOST_AUTO_TEST_CASE(StormerVerlet_ModifiedHamiltonianFormAndLagrangian_MatchApp
   }
 }
 
-BOOST_AUTO_TEST_CASE(StormerVerlet_AppendixALagrangian_AgreesWithMultistepAEqualsI) {
+BOOST_AUTO_TEST_CASE(
+    StormerVerlet_AppendixALagrangian_AgreesWithMultistepAEqualsI) {
   // Both discrete Lagrangians differ by a total derivative: same H and omega.
   auto sv = Derive(MakeStormerVerlet(2), AtOrder(4));
   auto lmm = Derive(MakeMultistep({ScalarMatrix(1, 2)}), AtOrder(4));
@@ -159,12 +161,13 @@ void CheckScalarLmm(int d) {
     Sv2 += Svi * Svi;
   }
   // H_0 = |v|^2/2 - U.
-  BOOST_TEST(Zero(r.hamiltonian[0] - t.Quadratic(ScalarMatrix(numeric(1, 2), d),
-                                                 v, v) +
+  BOOST_TEST(Zero(r.hamiltonian[0] -
+                  t.Quadratic(ScalarMatrix(numeric(1, 2), d), v, v) +
                   r.jet->Potential()));
   // H_2 = (1/24)[g^T M g - v^T (M S + S M) v].
   BOOST_TEST(Zero(r.hamiltonian[2] - (m * gg - 2 * m * vSv) / 24));
-  // H_4 = c1 [g^T S g - 2 grad^3 U[g, v, v] - grad^4 U[v, v, v, v]] - c2 |Sv|^2.
+  // H_4 = c1 [g^T S g - 2 grad^3 U[g, v, v] - grad^4 U[v, v, v, v]] - c2
+  // |Sv|^2.
   BOOST_TEST(Zero(r.hamiltonian[4] - (c1 * (gSg - 2 * g3 - u4) - c2 * Sv2)));
   // omega_2 = [[0, B], [-B, 0]], B = (1/12)(M S + S M); the x-x block vanishes.
   for (int i = 0; i < d; ++i)
@@ -182,11 +185,13 @@ void CheckScalarLmm(int d) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(Lmm4ScalarCoefficients_ModifiedEquationH2H4Omega2_MatchSection4InDimension1) {
+BOOST_AUTO_TEST_CASE(
+    Lmm4ScalarCoefficients_ModifiedEquationH2H4Omega2_MatchSection4InDimension1) {
   CheckScalarLmm(1);
 }
 
-BOOST_AUTO_TEST_CASE(Lmm4ScalarCoefficients_ModifiedEquationH2H4Omega2_MatchSection4InDimension2) {
+BOOST_AUTO_TEST_CASE(
+    Lmm4ScalarCoefficients_ModifiedEquationH2H4Omega2_MatchSection4InDimension2) {
   CheckScalarLmm(2);
 }
 
@@ -222,7 +227,8 @@ BOOST_AUTO_TEST_CASE(Lmm4SymmetricMatrix_H2AndOmega2IncludingC_MatchSection4) {
   BOOST_TEST(!r.modified_lagrangian.has_value());
 }
 
-BOOST_AUTO_TEST_CASE(Lmm4ScalarCoefficients_ModifiedAngularMomentum_MatchesSection4) {
+BOOST_AUTO_TEST_CASE(
+    Lmm4ScalarCoefficients_ModifiedAngularMomentum_MatchesSection4) {
   GiNaC::symbol alpha("alpha");
   GiNaC::matrix rotation(2, 2);
   rotation(0, 1) = -1;

@@ -2,7 +2,6 @@
 // and the fix; instability gets an explanation.
 #define BOOST_TEST_MODULE bea_input
 #include <boost/test/unit_test.hpp>
-
 #include <string>
 
 #include "solvers/bea/derivation.h"
@@ -35,12 +34,10 @@ BOOST_AUTO_TEST_CASE(MakeLmm4_NonSymmetricMatrix_IsRejected) {
 
 BOOST_AUTO_TEST_CASE(MakeMultistep_InconsistentCoefficients_AreRejected) {
   // sum j^2 A_j = 2 I.
-  BOOST_TEST(ThrowsWith(
-      [&] { MakeMultistep({ScalarMatrix(2, 2)}); },
-      "consistency (2.3)"));
-  BOOST_TEST(ThrowsWith(
-      [&] { MakeMultistep({ScalarMatrix(2, 2)}); },
-      "sum_j j^2 A_j = I"));
+  BOOST_TEST(ThrowsWith([&] { MakeMultistep({ScalarMatrix(2, 2)}); },
+                        "consistency (2.3)"));
+  BOOST_TEST(ThrowsWith([&] { MakeMultistep({ScalarMatrix(2, 2)}); },
+                        "sum_j j^2 A_j = I"));
 }
 
 BOOST_AUTO_TEST_CASE(CheckStability_PositiveAlpha_IsUnstableWithReason) {
@@ -52,9 +49,10 @@ BOOST_AUTO_TEST_CASE(CheckStability_PositiveAlpha_IsUnstableWithReason) {
 }
 
 BOOST_AUTO_TEST_CASE(CheckStability_NonPositiveAlpha_IsStable) {
-  for (auto alpha : {GiNaC::numeric(-1, 5), GiNaC::numeric(-3), GiNaC::numeric(0)}) {
-    const auto s = CheckStability(
-        NumericCoefficients(MakeLmm4(ScalarMatrix(alpha, 2))));
+  for (auto alpha :
+       {GiNaC::numeric(-1, 5), GiNaC::numeric(-3), GiNaC::numeric(0)}) {
+    const auto s =
+        CheckStability(NumericCoefficients(MakeLmm4(ScalarMatrix(alpha, 2))));
     BOOST_TEST(s.stable, "alpha = " << alpha << ": " << s.reason);
   }
   BOOST_TEST(CheckStability(NumericCoefficients(MakeStormerVerlet(3))).stable);
@@ -63,15 +61,15 @@ BOOST_AUTO_TEST_CASE(CheckStability_NonPositiveAlpha_IsStable) {
 BOOST_AUTO_TEST_CASE(Derive_UnreachableOrOddOrder_IsRejected) {
   DeriveOptions o;
   o.order = 12;
-  BOOST_TEST(ThrowsWith([&] { Derive(MakeStormerVerlet(2), o); },
-                        "reasonable time"));
+  BOOST_TEST(
+      ThrowsWith([&] { Derive(MakeStormerVerlet(2), o); }, "reasonable time"));
   o.order = 3;
   BOOST_TEST(ThrowsWith([&] { Derive(MakeStormerVerlet(1), o); }, "even"));
 }
 
 BOOST_AUTO_TEST_CASE(CentralDifferenceWeights_Order6_AreTheClassicalStencil) {
   const auto w = CentralDifferenceWeights(6);
-  const double expected[] = {-1.0 / 60, 9.0 / 60, -45.0 / 60, 0,
+  const double expected[] = {-1.0 / 60, 9.0 / 60,  -45.0 / 60, 0,
                              45.0 / 60, -9.0 / 60, 1.0 / 60};
   for (int j = 0; j < 7; ++j)
     BOOST_TEST(w[j] == expected[j], boost::test_tools::tolerance(1e-14));

@@ -60,17 +60,17 @@ BOOST_AUTO_TEST_CASE(Lmm4ScalarAlphaDimension2_FourChecks_HoldToH6) {
 
 BOOST_AUTO_TEST_CASE(Lmm4MatrixDimension2_ThreeChecks_HoldToH6) {
   // A general symmetric A breaks rotation invariance: no charge, generic U.
-  auto r = Derive(MakeLmm4(SymmetricMatrix2(GiNaC::numeric(-1, 5),
-                                            GiNaC::numeric(1, 10),
-                                            GiNaC::numeric(-1, 2))),
-                  Options(6, PotentialModel::kGeneric));
+  auto r = Derive(
+      MakeLmm4(SymmetricMatrix2(GiNaC::numeric(-1, 5), GiNaC::numeric(1, 10),
+                                GiNaC::numeric(-1, 2))),
+      Options(6, PotentialModel::kGeneric));
   ExpectAllPass(r, false);
   BOOST_TEST(!r.modified_lagrangian.has_value());
 }
 
 BOOST_AUTO_TEST_CASE(MidpointDimension2_FourChecks_HoldToH6) {
-  auto r = Derive(MakeMidpoint(2),
-                  Options(6, PotentialModel::kRadial, Rotation()));
+  auto r =
+      Derive(MakeMidpoint(2), Options(6, PotentialModel::kRadial, Rotation()));
   ExpectAllPass(r, true);
 }
 

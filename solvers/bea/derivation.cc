@@ -10,8 +10,7 @@ namespace vivp::bea {
 namespace {
 
 double Since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                       start)
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
       .count();
 }
 
@@ -60,8 +59,8 @@ Ostrogradsky Momenta(JetSpace& jet, const GiNaC::ex& L) {
                                 jet.TotalDerivative(o.p[k + 1][i]));
   o.p.pop_back();
   for (int i = 0; i < d; ++i)
-    o.euler_lagrange.push_back(GiNaC::expand(
-        jet.Partial(L, i, 0) - jet.TotalDerivative(o.p[1][i])));
+    o.euler_lagrange.push_back(
+        GiNaC::expand(jet.Partial(L, i, 0) - jet.TotalDerivative(o.p[1][i])));
   return o;
 }
 
@@ -85,8 +84,9 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
         << "; cost grows roughly tenfold per h^2); ask for a lower order";
     throw std::invalid_argument(msg.str());
   }
-  if (options.symmetry && (options.symmetry->rows() != static_cast<unsigned>(d) ||
-                           options.symmetry->cols() != static_cast<unsigned>(d)))
+  if (options.symmetry &&
+      (options.symmetry->rows() != static_cast<unsigned>(d) ||
+       options.symmetry->cols() != static_cast<unsigned>(d)))
     throw std::invalid_argument("the symmetry generator must be d x d");
 
   const auto start = std::chrono::steady_clock::now();
@@ -105,7 +105,8 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
   // Momenta and Euler-Lagrange expressions of every L_p.
   std::vector<Ostrogradsky> ostro;
   for (int p = 0; p <= N; ++p) ostro.push_back(Momenta(jet, r.lagrangian[p]));
-  for (int p = 0; p <= N; ++p) r.euler_lagrange.push_back(ostro[p].euler_lagrange);
+  for (int p = 0; p <= N; ++p)
+    r.euler_lagrange.push_back(ostro[p].euler_lagrange);
 
   lap("lagrangian and Euler-Lagrange");
   // E_0 = grad U - x'' is required (L_0 = |x'|^2/2 + U, the consistency of
@@ -138,8 +139,7 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
       next[i][0] = force[i];
       for (int p = 1; p <= T; ++p)
         if (!r.euler_lagrange[p][i].is_zero())
-          AddShifted(next[i], red.Substitute(r.euler_lagrange[p][i], T - p),
-                     p);
+          AddShifted(next[i], red.Substitute(r.euler_lagrange[p][i], T - p), p);
     }
     r.f = next;
     r.sweeps = s;
@@ -163,8 +163,7 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
           pmin = std::min(pmin, p);
         }
     }
-    if (pmin <= N)
-      RequireOrders(jet, jet.X(0, k - 1), N - pmin, kept);
+    if (pmin <= N) RequireOrders(jet, jet.X(0, k - 1), N - pmin, kept);
   }
   for (int p = 0; p <= N; ++p) {
     RequireOrders(jet, r.lagrangian[p], N - p, kept);
@@ -337,9 +336,10 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
     }
     // 4. The modified charge is conserved by the modified flow.
     if (r.charge)
-      r.checks.push_back(Check("the modified charge is conserved by the "
-                               "modified flow",
-                               {red.Derivative(*r.charge, N)}));
+      r.checks.push_back(
+          Check("the modified charge is conserved by the "
+                "modified flow",
+                {red.Derivative(*r.charge, N)}));
     if (r.modified_lagrangian)
       r.checks.push_back(CheckLagrangianGeneratesF(r, *r.modified_lagrangian));
     r.check_seconds = Since(check_start);

@@ -69,7 +69,7 @@ struct BeaResult {
   int order = 0;
   std::vector<GiNaC::ex> lagrangian;                   // L_p on the jet
   std::vector<std::vector<GiNaC::ex>> euler_lagrange;  // E_p, per component
-  std::vector<Series> f;            // modified equation x_i'' = f_i
+  std::vector<Series> f;  // modified equation x_i'' = f_i
   int sweeps = 0;
   Series hamiltonian;
   std::vector<std::vector<Series>> omega;  // 2d x 2d

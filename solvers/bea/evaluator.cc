@@ -94,10 +94,10 @@ ModifiedQuantities::ModifiedQuantities(const BeaResult& r,
       auto info = r.jet->Info(s);
       if (!info || info->kind == JetSpace::SymbolInfo::kJet) continue;
       vars_.push_back(s);
-      potential_index_.push_back(
-          info->kind == JetSpace::SymbolInfo::kGenericPotential
-              ? info->multi
-              : std::vector<int>{info->derivative});
+      potential_index_.push_back(info->kind ==
+                                         JetSpace::SymbolInfo::kGenericPotential
+                                     ? info->multi
+                                     : std::vector<int>{info->derivative});
     }
   int k = 0;
   auto compile = [&](std::vector<CompiledPolynomial>& out) {

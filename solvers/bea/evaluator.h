@@ -29,7 +29,7 @@ class CompiledPolynomial {
 
  private:
   std::vector<double> coeff_;
-  std::vector<int> start_;                 // per monomial, into factors_
+  std::vector<int> start_;                    // per monomial, into factors_
   std::vector<std::pair<int, int>> factors_;  // (variable, exponent)
   int max_exponent_ = 0;
 };

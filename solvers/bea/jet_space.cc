@@ -196,10 +196,10 @@ Reduction::Reduction(JetSpace& jet, const std::vector<Series>& f,
   }
   for (int k = 3; k < static_cast<int>(kept_.size()); ++k)
     for (int i = 0; i < d; ++i)
-      x_[k].push_back(kept_[k] < 0 ? Series(0)
-                                   : Derivative(x_[k - 1][i].Truncated(
-                                                    kept_[k]),
-                                                kept_[k]));
+      x_[k].push_back(
+          kept_[k] < 0
+              ? Series(0)
+              : Derivative(x_[k - 1][i].Truncated(kept_[k]), kept_[k]));
 }
 
 Series Reduction::Derivative(const Series& g, int order) {
@@ -239,8 +239,7 @@ Series Reduction::Substitute(const GiNaC::ex& e, int order) {
     auto factor_of = [&](const GiNaC::ex& f) {
       GiNaC::ex base = f;
       int n = 1;
-      if (GiNaC::is_a<GiNaC::power>(f) &&
-          GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
+      if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
           GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_pos_integer()) {
         base = f.op(0);
         n = GiNaC::ex_to<GiNaC::numeric>(f.op(1)).to_int();
@@ -254,9 +253,9 @@ Series Reduction::Substitute(const GiNaC::ex& e, int order) {
                                    std::to_string(info->derivative) +
                                    ") beyond the reduction's jet order");
           if (kept_[info->derivative] < order)
-            throw std::logic_error(
-                "Reduction: substitution needs x^(" +
-                std::to_string(info->derivative) + ") beyond its kept order");
+            throw std::logic_error("Reduction: substitution needs x^(" +
+                                   std::to_string(info->derivative) +
+                                   ") beyond its kept order");
           factors.push_back(&Power(info->component, info->derivative, n));
           return;
         }

@@ -55,8 +55,8 @@ class JetSpace {
   // What a symbol stands for.
   struct SymbolInfo {
     enum Kind { kJet, kGenericPotential, kRadialPotential } kind;
-    int component = 0;           // kJet: i
-    int derivative = 0;          // kJet: k; kRadialPotential: k
+    int component = 0;            // kJet: i
+    int derivative = 0;           // kJet: k; kRadialPotential: k
     std::vector<int> multi = {};  // kGenericPotential: a
   };
   std::optional<SymbolInfo> Info(const GiNaC::symbol& s) const;

@@ -13,7 +13,8 @@ std::vector<Series> Displacement(JetSpace& jet, const GiNaC::ex& s,
   for (int i = 0; i < jet.dim(); ++i) {
     Series d(order);
     for (int m = 1; m <= order; ++m)
-      d[m] = GiNaC::expand(scale * GiNaC::pow(s, m) / Factorial(m) * jet.X(i, m));
+      d[m] =
+          GiNaC::expand(scale * GiNaC::pow(s, m) / Factorial(m) * jet.X(i, m));
     delta.push_back(d);
   }
   return delta;
@@ -22,8 +23,7 @@ std::vector<Series> Displacement(JetSpace& jet, const GiNaC::ex& s,
 // sum_j (1/2h^2)(x(t+jh) - x(t))^T A_j (x(t+jh) - x(t)), coefficient of h^p:
 // 1/2 sum_j sum_{m+n=p+2} j^{p+2}/(m! n!) x^(m)T A_j x^(n).
 std::vector<GiNaC::ex> Kinetic(JetSpace& jet,
-                               const std::vector<GiNaC::matrix>& A,
-                               int order) {
+                               const std::vector<GiNaC::matrix>& A, int order) {
   const int d = jet.dim();
   std::vector<GiNaC::ex> L(order + 1, 0);
   for (int p = 0; p <= order; ++p) {
@@ -60,8 +60,9 @@ Series ShiftedPotential(JetSpace& jet, const GiNaC::ex& g,
   for (int n = 1; n <= order; ++n) {
     Series next(order);
     for (int i = 0; i < jet.dim(); ++i)
-      next += delta[i] *
-              Map(term, [&](const GiNaC::ex& e) { return jet.Partial(e, i, 0); });
+      next += delta[i] * Map(term, [&](const GiNaC::ex& e) {
+                return jet.Partial(e, i, 0);
+              });
     term = next * GiNaC::numeric(1, n);
     out += term;
   }
@@ -129,8 +130,8 @@ std::vector<Series> ExpandScheme(JetSpace& jet, const Method& method,
     auto minus = Displacement(jet, -1, GiNaC::numeric(1, 2), order);
     for (int i = 0; i < d; ++i) {
       const GiNaC::ex g = jet.Partial(u, i, 0);
-      Series f = ShiftedPotential(jet, g, plus) +
-                 ShiftedPotential(jet, g, minus);
+      Series f =
+          ShiftedPotential(jet, g, plus) + ShiftedPotential(jet, g, minus);
       r[i] -= f * GiNaC::numeric(1, 2);
     }
   } else {

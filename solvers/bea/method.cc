@@ -17,7 +17,8 @@ Method MakeMidpoint(int dim) {
 
 Method MakeMultistep(std::vector<GiNaC::matrix> A, std::string name) {
   if (A.empty())
-    throw std::invalid_argument("a multistep method needs coefficients A_1..A_k");
+    throw std::invalid_argument(
+        "a multistep method needs coefficients A_1..A_k");
   const unsigned d = A[0].rows();
   GiNaC::matrix sum(d, d);
   for (std::size_t j = 0; j < A.size(); ++j) {
@@ -74,8 +75,7 @@ Method MakeLmm4(const GiNaC::matrix& A) {
   if (A.cols() != A.rows())
     throw std::invalid_argument("the coefficient matrix A must be square");
   const GiNaC::matrix identity = ScalarMatrix(1, d);
-  const GiNaC::matrix a2 =
-      identity.sub(A).mul_scalar(GiNaC::numeric(1, 4));
+  const GiNaC::matrix a2 = identity.sub(A).mul_scalar(GiNaC::numeric(1, 4));
   return MakeMultistep({A, a2}, "lmm4");
 }
 

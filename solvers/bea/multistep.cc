@@ -64,7 +64,8 @@ Stability CheckStability(const std::vector<Eigen::MatrixXd>& A) {
   s.roots.assign(all.begin() + 2 * d, all.end());
   // Roots on the unit circle come out perturbed by ~sqrt(eps) when they are
   // (nearly) double: accept |zeta| <= 1 + 100 n sqrt(eps).
-  const double tol = 100 * n * std::sqrt(std::numeric_limits<double>::epsilon());
+  const double tol =
+      100 * n * std::sqrt(std::numeric_limits<double>::epsilon());
   for (const auto& z : s.roots) {
     s.max_root_modulus = std::max(s.max_root_modulus, std::abs(z));
   }
@@ -108,8 +109,7 @@ MultistepRun RunMultistep(const std::vector<Eigen::MatrixXd>& A,
   const int k = static_cast<int>(A.size());
   const int d = static_cast<int>(x0.size());
   const double h = o.h;
-  if (o.steps < 2 * k)
-    throw std::invalid_argument("need at least 2k steps");
+  if (o.steps < 2 * k) throw std::invalid_argument("need at least 2k steps");
   Eigen::FullPivLU<Eigen::MatrixXd> lead(A[k - 1]);
   if (!lead.isInvertible())
     throw std::invalid_argument(

@@ -21,7 +21,8 @@ class NumericPotential {
   virtual PotentialModel model() const = 0;
   // Generic model: d^a U(x) for the multi-index a (size dim). Radial model:
   // V^(a[0])(|x|^2).
-  virtual double Derivative(const std::vector<int>& a, const double* x) const = 0;
+  virtual double Derivative(const std::vector<int>& a,
+                            const double* x) const = 0;
   virtual void Gradient(const double* x, double* g) const = 0;
 };
 
@@ -34,10 +35,14 @@ class Pendulum : public NumericPotential {
   double Derivative(const std::vector<int>& a, const double* x) const override {
     // d^k cos x = cos(x + k pi/2).
     switch (a[0] % 4) {
-      case 0: return std::cos(x[0]);
-      case 1: return -std::sin(x[0]);
-      case 2: return -std::cos(x[0]);
-      default: return std::sin(x[0]);
+      case 0:
+        return std::cos(x[0]);
+      case 1:
+        return -std::sin(x[0]);
+      case 2:
+        return -std::cos(x[0]);
+      default:
+        return std::sin(x[0]);
     }
   }
   void Gradient(const double* x, double* g) const override {

@@ -1,0 +1,56 @@
+// Seed 003, Fig. 2: the multistep method (4.1) with A = -0.2 I on
+// U = exp(-|x|^2/2), x(0) = (1, -1), x'(0) = (0.1, -0.2), h = 0.15, 10^4
+// steps: the trajectory, and the deviations of the angular momentum l = I0, I0
+// + h^2 I2 and I0 + h^2 I2 + h^4 I4 (Noether charge of rotations) along it
+// (start values from the modified equation to h^4, x' by 6th-order central
+// differences). Usage: fig_bea_fig2_momentum [DIR]
+#include <iostream>
+
+#include "figures/plot.h"
+#include "solvers/bea/conservation.h"
+
+using namespace vivp::bea;
+
+int main(int argc, char** argv) {
+  const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
+  DeriveOptions o;
+  o.order = 4;
+  o.model = PotentialModel::kRadial;
+  GiNaC::matrix rotation(2, 2);
+  rotation(0, 1) = -1;
+  rotation(1, 0) = 1;
+  o.symmetry = rotation;
+  const auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)), o);
+  const RadialGaussian potential(2);
+  const ModifiedQuantities q(r, potential);
+  ConservationSetup s;
+  s.x0 = Eigen::Vector2d(1, -1);
+  s.v0 = Eigen::Vector2d(0.1, -0.2);
+  s.t_end = 1500;
+  const double h = 0.15;
+  const auto dev = Deviations(r, q, potential, s, h);
+
+  std::vector<std::vector<double>> path, energy;
+  for (int n = 0; n < dev.run.x.rows(); ++n)
+    path.push_back({dev.run.x(n, 0), dev.run.x(n, 1)});
+  for (int n = 0; n < dev.t.size(); ++n)
+    energy.push_back({dev.t(n), dev.deviation(n, 3), dev.deviation(n, 4),
+                      dev.deviation(n, 5)});
+  vivp::plot::Figure fig(dir, "fig_bea_fig2_momentum", 1200, 500);
+  const auto p = fig.Data("path", path, "x1 x2");
+  const auto e = fig.Data("momentum", energy, "t dI0 dI2 dI4");
+  fig.script()
+      << "set multiplot layout 1,2\n"
+      << "set size ratio -1\nset xlabel 'x_1'\nset ylabel 'x_2'\n"
+      << "set title 'LMM (4.1), A = -0.2 I, h = 0.15'\n"
+      << "plot '" << p << "' using 1:2 with dots notitle\n"
+      << "set size noratio\nset xlabel 't'\n"
+      << "set ylabel '|I(t) - I(0)|'\nset logscale y\n"
+      << "set format y '10^{%L}'\nset key below\n"
+      << "set title 'modified angular momenta'\n"
+      << "plot '" << e << "' using 1:(abs($2)) with lines title 'l = I_0', '"
+      << e << "' using 1:(abs($3)) with lines title 'I_0 + h^2 I_2', '" << e
+      << "' using 1:(abs($4)) with lines lw 2 title 'I_0 + h^2 I_2 + h^4 I_4'\n"
+      << "unset multiplot\n";
+  std::cout << fig.Render().string() << "\n";
+}
