@@ -24,7 +24,7 @@ namespace vivp::steppers {
 struct NewtonOptions {
   int max_iterations = 60;
   // Re-evaluate Df when the contraction rate of a solve exceeds this.
-  double refresh_rate = 0.05;
+  double refresh_rate = 0.25;
 };
 
 template <class Problem>
