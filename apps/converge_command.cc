@@ -21,6 +21,7 @@ struct ConvergeOptions {
   double t_end = 1.0;
   std::string json;
   bool force = false;
+  bool extended_residual = false;
 };
 
 std::vector<long long> ParsePoints(const std::string& list) {
@@ -71,6 +72,7 @@ int RunConverge(const ConvergeOptions& o) {
   const std::vector<long long> points = ParsePoints(o.points);
   SolveOptions options;
   options.path = ParseSolver(o.solver);
+  options.extended_residual = o.extended_residual;
   Grid grid;
   grid.op = o.op;
   grid.t_end = o.t_end;
@@ -163,6 +165,8 @@ Runner AddConvergeCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--json", o->json, "write the study as JSON (- for stdout)");
   cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
+  cmd->add_flag("--extended-residual", o->extended_residual,
+                "reduced Newton: refinement residual in long double");
   return [o] { return RunConverge(*o); };
 }
 

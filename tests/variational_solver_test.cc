@@ -343,3 +343,20 @@ BOOST_DATA_TEST_CASE(NonlinearSystems_PendulumAndKeplerConvergeAtSbp42Orders,
   BOOST_TEST(std::abs(s.orders.p_corrected - 4.0) <= 0.2,
              "momentum order " << s.orders.p_corrected);
 }
+
+BOOST_AUTO_TEST_CASE(FreeFallSbp42_MixedPrecisionRefinementIsExactTo65536) {
+  // Plain double loses ~eps·Nt to the conditioning (1.8e-13 at Nt = 65536);
+  // refinement with a long-double residual (solution and factorization still
+  // in double) removes it.
+  const NamedProblem& ff = FindProblem("freefall");
+  for (long long n : {4096, 16384, 65536}) {
+    Grid g;
+    g.op = "sbp42";
+    g.points = n;
+    SolveOptions o;
+    o.extended_residual = true;
+    const auto s = ff.solve(g, o);
+    BOOST_TEST(s.status.converged);
+    BOOST_TEST(std::abs(s.x1(n - 1, 0) - 0.8) <= 4 * kEps, "Nt = " << n);
+  }
+}

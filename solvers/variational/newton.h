@@ -27,6 +27,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -81,9 +82,14 @@ inline double Since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace detail
 
+// `residual_override`, when given, replaces system.Residual for every
+// residual evaluation (e.g. the same residual evaluated in long double: mixed
+// precision iterative refinement).
 template <class Real, class System>
-NewtonReport Newton(const System& system, std::vector<Real>& y,
-                    const NewtonOptions& options = {}) {
+NewtonReport Newton(
+    const System& system, std::vector<Real>& y,
+    const NewtonOptions& options = {},
+    const std::function<void(const Real*, Real*)>& residual_override = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   NewtonReport report;
@@ -104,7 +110,10 @@ NewtonReport Newton(const System& system, std::vector<Real>& y,
 
   auto residual = [&] {
     const auto t0 = Clock::now();
-    system.Residual(y.data(), f.data());
+    if (residual_override)
+      residual_override(y.data(), f.data());
+    else
+      system.Residual(y.data(), f.data());
     report.seconds.residual += detail::Since(t0);
     return detail::AllFinite(f);
   };

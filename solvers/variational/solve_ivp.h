@@ -25,6 +25,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -223,7 +224,29 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
     std::vector<Real> y(reduced.size(), Real(0));
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < d; ++c) y[reduced.X(i, c)] = prep.guess[i * d + c];
-    report = solvers::Newton(reduced, y, options.newton);
+    if (options.extended_residual && std::is_same_v<Real, double>) {
+      // The same reduced system in long double, used only for residuals.
+      const auto d_ext = sbp::MakeOperator<long double>(
+          grid.op, grid.points, grid.t_start, grid.t_end);
+      const sbp::RegularizedOperator<long double> dbar_ext(d_ext,
+                                                           grid.sigma0);
+      std::array<long double, d> x0e, v0e;
+      for (int c = 0; c < d; ++c) {
+        x0e[c] = initial.x[c];
+        v0e[c] = initial.v.empty() ? 0.0L : initial.v[c];
+      }
+      const action::ReducedSystem<P, long double> ext(problem, dbar_ext, x0e,
+                                                      v0e, prep.order);
+      std::vector<long double> ye(reduced.size()), fe(reduced.size());
+      report = solvers::Newton<Real>(
+          reduced, y, options.newton, [&](const Real* yy, Real* ff) {
+            for (int k = 0; k < reduced.size(); ++k) ye[k] = yy[k];
+            ext.Residual(ye.data(), fe.data());
+            for (int k = 0; k < reduced.size(); ++k) ff[k] = Real(fe[k]);
+          });
+    } else {
+      report = solvers::Newton(reduced, y, options.newton);
+    }
     u.assign(full.size(), Real(0));
     for (int i = 0; i < n; ++i)
       for (int c = 0; c < d; ++c)
