@@ -136,7 +136,12 @@ GiNaC::exmap ToW(const bea::BeaResult& r) {
       const GiNaC::symbol u = r.jet->U(a);
       std::string name = u.get_name(), tex = "W";
       name[0] = 'W';
-      m[u] = -GiNaC::symbol(name, tex + name.substr(1));
+      if (name.size() > 1) {
+        tex += "_{";
+        tex += name.substr(2);
+        tex += '}';
+      }
+      m[u] = -GiNaC::symbol(name, tex);
       return;
     }
     for (a[i] = 0; a[i] <= left; ++a[i]) walk(i + 1, left - a[i]);
