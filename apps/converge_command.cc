@@ -22,6 +22,7 @@ struct ConvergeOptions {
   std::string json;
   bool force = false;
   bool extended_residual = false;
+  long long slab_points = 0;
 };
 
 std::vector<long long> ParsePoints(const std::string& list) {
@@ -76,11 +77,15 @@ int RunConverge(const ConvergeOptions& o) {
   Grid grid;
   grid.op = o.op;
   grid.t_end = o.t_end;
-  const ConvergenceStudy study = RunConvergence(problem, grid, points, options);
+  const ConvergenceStudy study =
+      RunConvergence(problem, grid, points, options, 1e-13, o.slab_points);
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   human << problem.name << " (" << problem.description << "), " << o.op
-        << ", solver " << o.solver << ", t_end = " << o.t_end << "\n";
+        << ", solver " << o.solver << ", t_end = " << o.t_end;
+  if (o.slab_points > 0)
+    human << ", marching in windows of " << o.slab_points << " points";
+  human << "\n";
   human << std::setw(7) << "Nt" << std::setw(11) << "dt" << std::setw(11)
         << "err x" << std::setw(11) << "err Dx" << std::setw(11) << "err x+λ4"
         << std::setw(11) << "err −λ3" << std::setw(6) << "it" << std::setw(10)
@@ -116,6 +121,7 @@ int RunConverge(const ConvergeOptions& o) {
                       {"err_p_corrected", Number(r.err_p_corrected)},
                       {"error_estimate", Number(r.error_estimate)},
                       {"iterations", r.iterations},
+                      {"fallbacks", r.fallbacks},
                       {"seconds", r.seconds},
                       {"converged", r.converged},
                       {"status", r.reason}});
@@ -123,6 +129,7 @@ int RunConverge(const ConvergeOptions& o) {
                               {"operator", o.op},
                               {"solver", o.solver},
                               {"t_end", o.t_end},
+                              {"slab_points", o.slab_points},
                               {"rows", rows},
                               {"orders", OrdersJson(study.orders)},
                               {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
@@ -165,6 +172,11 @@ Runner AddConvergeCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--json", o->json, "write the study as JSON (- for stdout)");
   cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
+  cmd->add_option("--slab-points", o->slab_points,
+                  "march in windows of this many points (0: one global "
+                  "solve)")
+      ->check(WholeNumberAtLeast(0, ">= 0 (0: one global solve)"))
+      ->capture_default_str();
   cmd->add_flag("--extended-residual", o->extended_residual,
                 "reduced Newton: refinement residual in long double");
   return [o] { return RunConverge(*o); };

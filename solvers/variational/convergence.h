@@ -22,9 +22,11 @@ struct ConvergenceRow {
   double err_x = 0;    // |x_N − x(T)|∞
   double err_v = 0;    // |(Dx)_N − ẋ(T)|∞ (first order: |(Dx)_N − ẋ(T)| too)
   double err_x_corrected = 0;  // |x_N + M⁻¹λ4 − x(T)|∞
-  double err_p_corrected = 0;  // |−λ3 − p(T)|∞ (NaN for first order)
+  double err_p_corrected = 0;  // |−λ3 − p(T)|∞ (NaN for first order;
+                               // marching: error of the handed-off velocity)
   double error_estimate = 0;   // |M⁻¹λ4|∞, the built-in estimate of err_x
   int iterations = 0;
+  int fallbacks = 0;  // marching: windows split because Newton failed
   double seconds = 0;
   bool converged = false;
   std::string reason;

@@ -19,6 +19,7 @@
 #include "problems/pendulum.h"
 #include "solvers/variational/convergence.h"
 #include "solvers/variational/ceres_lm.h"
+#include "solvers/variational/march.h"
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp {
@@ -32,6 +33,7 @@ struct NamedProblem {
   std::string description;
   InitialData initial;
   std::function<IvpSolution<double>(const Grid&, const SolveOptions&)> solve;
+  std::function<MarchResult(const Grid&, const MarchOptions&)> march;
   std::function<ExactState(double t)> exact;
 };
 
@@ -47,6 +49,9 @@ NamedProblem Entry(std::string name, std::string description, P problem,
   e.solve = [problem, initial](const Grid& g, const SolveOptions& o) {
     if (o.path == Path::kCeresLm) return SolveIvpCeres(problem, initial, g, o);
     return SolveIvp(problem, initial, g, o);
+  };
+  e.march = [problem, initial](const Grid& g, const MarchOptions& o) {
+    return MarchIvp(problem, initial, g, o);
   };
   e.exact = [problem, exact_fn](double t) {
     ExactState s = exact_fn(problem, t);
@@ -133,16 +138,66 @@ inline const NamedProblem& FindProblem(const std::string& name) {
                               "'; valid problems: " + ProblemNameList());
 }
 
-// Solves `problem` on every grid size and measures the errors at t_end.
+// Marches `problem` in windows of `slab_points` and measures like
+// RunConvergence: x_N and (Dx)_N of the last window, and the handed-off
+// (corrected) end state.
+inline ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
+                               const SolveOptions& options,
+                               long long slab_points, const ExactState& exact) {
+  MarchOptions mo;
+  mo.window_points = slab_points;
+  mo.solve = options;
+  const MarchResult m = problem.march(grid, mo);
+  ConvergenceRow r;
+  r.points = grid.points;
+  const std::size_t last = m.t.size() - 1;
+  auto maxdiff = [](auto&& a, const std::vector<double>& b) {
+    double v = 0;
+    for (std::size_t c = 0; c < b.size(); ++c) v = std::max(v, std::abs(a(c) - b[c]));
+    return v;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!m.t.empty()) {
+    r.err_x = maxdiff([&](std::size_t c) { return m.x(last, c); }, exact.x);
+    r.err_v = exact.v.empty() ? nan
+                              : maxdiff([&](std::size_t c) { return m.v(last, c); },
+                                        exact.v);
+  }
+  r.err_x_corrected =
+      maxdiff([&](std::size_t c) { return m.end_position[c]; }, exact.x);
+  // For L = ½ẋᵀMẋ − V the handed-off velocity is M⁻¹p; compare velocities.
+  r.err_p_corrected =
+      m.end_velocity.empty() || exact.v.empty()
+          ? nan
+          : maxdiff([&](std::size_t c) { return m.end_velocity[c]; }, exact.v);
+  r.error_estimate = m.error_estimate;
+  r.iterations = m.iterations;
+  r.fallbacks = m.fallbacks;
+  r.seconds = m.seconds;
+  r.converged = m.status.converged;
+  r.reason = m.status.reason;
+  return r;
+}
+
+// Solves `problem` on every grid size and measures the errors at t_end; with
+// slab_points > 0 it marches in windows of that many points instead.
 inline ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
                                        const std::vector<long long>& points,
                                        const SolveOptions& options,
-                                       double round_off_floor = 1e-13) {
+                                       double round_off_floor = 1e-13,
+                                       long long slab_points = 0) {
   ConvergenceStudy study;
   const double span = grid.t_end - grid.t_start;
   const ExactState exact = problem.exact(grid.t_end);
   for (long long n : points) {
     grid.points = n;
+    if (slab_points > 0) {
+      ConvergenceRow r = MarchRow(problem, grid, options, slab_points, exact);
+      r.dt = span / static_cast<double>(n);
+      r.dt_true = span / static_cast<double>(n - 1);
+      study.rows.push_back(r);
+      continue;
+    }
     const IvpSolution<double> s = problem.solve(grid, options);
     ConvergenceRow r;
     r.points = n;
