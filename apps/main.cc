@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
       {"spectrum", vivp::app::AddSpectrumCommand(app)},
       {"converge", vivp::app::AddConvergeCommand(app)},
       {"bea", vivp::app::AddBeaCommand(app)},
+      {"bench", vivp::app::AddBenchCommand(app)},
   };
 
   try {

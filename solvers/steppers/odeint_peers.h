@@ -27,12 +27,15 @@ class Rk4 {
   using State = std::array<double, System::kN>;
   explicit Rk4(const System& system) : system_(system) {}
   std::string name() const { return "odeint_rk4"; }
-  int order() const { return stepper_.order(); }
+  int order() const { return odeint::runge_kutta4<State>::order_value; }
   long evaluations() const { return system_.evaluations(); }
+  // The odeint stepper is stateless between steps; making it here keeps its
+  // uninitialised scratch arrays out of copies of this object.
   StepReport Step(Vector& y, double h) {
     State x;
     Vector::Map(x.data()) = y;
-    stepper_.do_step(
+    odeint::runge_kutta4<State> stepper;
+    stepper.do_step(
         [this](const State& s, State& d, double) {
           Vector::Map(d.data()) = system_.Field(Vector::Map(s.data()));
         },
@@ -43,7 +46,6 @@ class Rk4 {
 
  private:
   System system_;
-  odeint::runge_kutta4<State> stepper_;
 };
 
 // Shared by the two Nyström steppers: the force −∂H/∂q at q.

@@ -1,0 +1,187 @@
+// `vivp bench`: what accuracy costs in time. For each method and step count
+// (or tolerance, for odeint's adaptive dopri5) on one problem: final-time
+// error against the problem's reference, maximum energy and invariant
+// errors, median wall time of --repeats runs, function evaluations and
+// implicit iterations; as a table, or as JSON with --json FILE|-.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "apps/command.h"
+#include "solvers/steppers/bench_problems.h"
+
+namespace vivp::app {
+namespace {
+
+struct BenchOptions {
+  std::string problem;
+  std::string methods;  // comma-separated; empty: all for the problem
+  std::string steps;    // comma-separated; empty: the default sweep
+  long long repeats = 5;
+  double budget = 1.0;
+  std::string json;
+  bool force = false;
+};
+
+std::vector<std::string> SplitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string Join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+std::string ProblemNames() {
+  std::vector<std::string> names;
+  for (const auto& p : steppers::BenchProblems()) names.push_back(p.name);
+  return Join(names);
+}
+
+std::vector<double> ParseSteps(const std::string& s) {
+  std::vector<double> out;
+  for (const auto& item : SplitList(s)) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (end != item.c_str() + item.size() || !std::isfinite(v) || !(v > 0))
+      throw UsageError(
+          "--steps: expected positive numbers (step counts, or "
+          "tolerances for odeint_dopri5), got '" +
+          item + "'");
+    out.push_back(v);
+  }
+  return out;
+}
+
+nlohmann::json Number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json RowJson(const steppers::WorkPoint& w) {
+  return {{"method", w.method},
+          {"steps", w.steps},
+          {"tolerance", Number(w.tolerance)},
+          {"h", Number(w.h)},
+          {"error", Number(w.error)},
+          {"energy_error", Number(w.energy_error)},
+          {"invariant_error", Number(w.invariant_error)},
+          {"seconds", Number(w.seconds)},
+          {"evaluations", w.evaluations},
+          {"iterations", w.iterations},
+          {"iterations_per_step", w.iterations_per_step},
+          {"status", w.status}};
+}
+
+void PrintRow(std::ostream& out, const steppers::WorkPoint& w) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "%-22s %9ld %9.1e %10.3e %10.3e %10.3e %10.3e %10ld %6.2f %s\n",
+                w.method.c_str(), w.steps, w.tolerance, w.error, w.energy_error,
+                w.invariant_error, w.seconds, w.evaluations,
+                w.iterations_per_step, w.status.c_str());
+  out << line;
+}
+
+int RunBench(const BenchOptions& o) {
+  const steppers::BenchProblem* problem = nullptr;
+  try {
+    problem = &steppers::FindBenchProblem(o.problem);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--problem: ") + e.what());
+  }
+  std::vector<std::string> methods =
+      o.methods.empty() ? problem->methods : SplitList(o.methods);
+  for (const auto& m : methods)
+    if (std::find(problem->methods.begin(), problem->methods.end(), m) ==
+        problem->methods.end())
+      throw UsageError("--methods: unknown or inapplicable method '" + m +
+                       "' for " + problem->name +
+                       "; valid: " + Join(problem->methods));
+  const std::vector<double> steps = ParseSteps(o.steps);
+  if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
+
+  std::ostream& human = o.json == "-" ? std::cerr : std::cout;
+  human << "# " << problem->description << "; reference: " << problem->reference
+        << "; median of " << o.repeats << " runs\n";
+  human << "# method                  steps       tol      error  max|dH|/H "
+           " max|dI|    seconds      evals  it/st status\n";
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& m : methods) {
+    std::vector<steppers::WorkPoint> sweep;
+    if (steps.empty()) {
+      sweep =
+          steppers::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
+    } else {
+      for (double k : steps) {
+        if (!steppers::IsAdaptive(m) && k != std::floor(k))
+          throw UsageError("--steps: step counts must be whole numbers, got " +
+                           std::to_string(k));
+        sweep.push_back(problem->measure(m, k, static_cast<int>(o.repeats)));
+      }
+    }
+    for (const auto& w : sweep) {
+      PrintRow(human, w);
+      rows.push_back(RowJson(w));
+    }
+  }
+  if (!o.json.empty()) {
+    const nlohmann::json j = {{"problem", problem->name},
+                              {"description", problem->description},
+                              {"reference", problem->reference},
+                              {"t_end", problem->t_end},
+                              {"invariants", problem->invariant_names},
+                              {"repeats", o.repeats},
+                              {"rows", rows}};
+    if (o.json == "-") {
+      std::cout << j.dump(2) << "\n";
+    } else {
+      std::ofstream f(o.json);
+      f << j.dump(2) << "\n";
+      if (!f) throw std::runtime_error("cannot write " + o.json);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+Runner AddBenchCommand(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "What accuracy costs in time: error, invariants, wall time and "
+      "evaluations per method and step on one problem");
+  cmd->add_option("--problem", o->problem, "problem: " + ProblemNames())
+      ->required();
+  cmd->add_option("--methods", o->methods,
+                  "comma-separated methods (default: all that apply)");
+  cmd->add_option("--steps", o->steps,
+                  "comma-separated step counts (tolerances for odeint_dopri5); "
+                  "default: a doubling sweep to round-off or --budget");
+  cmd->add_option("--repeats", o->repeats, "timed runs per point (median)")
+      ->check(WholeNumberAtLeast(5, "at least 5"))
+      ->capture_default_str();
+  cmd->add_option("--budget", o->budget,
+                  "stop a sweep after a run slower than this many seconds")
+      ->check(FiniteNumber())
+      ->capture_default_str();
+  cmd->add_option("--json", o->json, "write the rows as JSON (- for stdout)");
+  cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
+  return [o] {
+    if (!(o->budget > 0))
+      throw UsageError("--budget: must be positive, got " +
+                       std::to_string(o->budget));
+    return RunBench(*o);
+  };
+}
+
+}  // namespace vivp::app

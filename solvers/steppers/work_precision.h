@@ -1,0 +1,200 @@
+// What accuracy costs in time: one configuration (method, steps or tolerance)
+// run on one problem, measured. A row holds the final-time error against the
+// problem's reference, the maximum energy error and the maximum error of the
+// problem's other invariants over the run, the wall time (median of repeats,
+// at least 5), function evaluations and implicit iterations. No printing:
+// the bench program, the CLI and the figures format rows.
+//
+// Methods are the stepper family (methods.h), the Boost.Odeint peers
+// (odeint_rk4, odeint_velocity_verlet, odeint_mclachlan and the adaptive
+// odeint_dopri5, whose knob is a tolerance), and any ExternalMethod
+// registered by name: the hook by which the variational solver (SBP21/42/63/
+// 84) joins the same table. An external method gets the problem name, the
+// initial state (q, p), t_end and the step count and returns the states at
+// the step times and its counts.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "solvers/steppers/integrate.h"
+#include "solvers/steppers/methods.h"
+#include "solvers/steppers/odeint_peers.h"
+
+namespace vivp::steppers {
+
+struct WorkPoint {
+  std::string method;
+  long steps = 0;          // fixed-step methods: steps to t_end
+  double tolerance = NAN;  // adaptive methods
+  double h = NAN;
+  double error = NAN;  // max-norm of (q, p) − reference at t_end
+  double energy_error = NAN;  // max |H − H₀| / |H₀| over the run (|H₀| if ≠ 0)
+  double invariant_error = NAN;  // max over invariants of max |I − I₀|
+  double seconds = NAN;          // median wall time of one run
+  long evaluations = 0;
+  long iterations = 0;
+  double iterations_per_step = 0;
+  std::string status = "ok";
+};
+
+// A method from outside the stepper family (the variational solver).
+struct ExternalRun {
+  std::vector<std::vector<double>> states;  // (q, p) at t_k = k·t_end/steps
+  long evaluations = 0, iterations = 0;
+  std::string status = "ok";
+};
+using ExternalMethod = std::function<ExternalRun(const std::string& problem,
+                                                 const std::vector<double>& y0,
+                                                 double t_end, long steps)>;
+
+inline std::map<std::string, ExternalMethod>& ExternalMethods() {
+  static std::map<std::string, ExternalMethod> methods;
+  return methods;
+}
+inline void RegisterExternalMethod(const std::string& name, ExternalMethod m) {
+  ExternalMethods()[name] = std::move(m);
+}
+
+inline const std::vector<std::string>& PeerNames() {
+  static const std::vector<std::string> names = {
+      "odeint_rk4", "odeint_velocity_verlet", "odeint_mclachlan",
+      "odeint_dopri5"};
+  return names;
+}
+
+inline bool IsAdaptive(const std::string& method) {
+  return method == "odeint_dopri5";
+}
+
+template <class Problem>
+std::vector<std::string> WorkPrecisionMethods() {
+  std::vector<std::string> out = MethodsFor<Problem>();
+  for (const auto& p : PeerNames())
+    if (Problem::kSeparable || p == "odeint_rk4" || p == "odeint_dopri5")
+      out.push_back(p);
+  for (const auto& [name, fn] : ExternalMethods()) out.push_back(name);
+  return out;
+}
+
+template <class Problem>
+AnyStepper<Problem> MakeAnyStepper(const std::string& name,
+                                   const HamiltonianSystem<Problem>& system) {
+  if (name == "odeint_rk4")
+    return AnyStepper<Problem>(odeint_peers::Rk4<Problem>(system));
+  if constexpr (Problem::kSeparable) {
+    if (name == "odeint_velocity_verlet")
+      return AnyStepper<Problem>(odeint_peers::VelocityVerlet<Problem>(system));
+    if (name == "odeint_mclachlan")
+      return AnyStepper<Problem>(odeint_peers::McLachlan<Problem>(system));
+  }
+  try {
+    return MakeStepper<Problem>(name, system);
+  } catch (const std::invalid_argument&) {
+    std::string valid;
+    for (const auto& n : WorkPrecisionMethods<Problem>())
+      valid += (valid.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown or inapplicable method '" + name +
+                                "'; valid for this problem: " + valid);
+  }
+}
+
+// Measures one configuration. `reference` is the state at t_end; `knob` is
+// the step count (fixed-step) or the tolerance (adaptive).
+template <class Problem>
+WorkPoint Measure(const std::string& problem_name, const Problem& problem,
+                  const std::string& method, const std::vector<double>& y0,
+                  const std::vector<double>& reference, double t_end,
+                  double knob, int repeats = 5) {
+  using System = HamiltonianSystem<Problem>;
+  using Vector = typename System::Vector;
+  if (repeats < 5)
+    throw std::invalid_argument("repeats must be at least 5, got " +
+                                std::to_string(repeats));
+  const System system(problem);
+  const Vector start = Vector::Map(y0.data());
+  const double e0 = system.Energy(start);
+  const double e_scale = e0 != 0 ? std::fabs(e0) : 1.0;
+  const auto i0 = problem.Invariants(start.data(), start.data() + System::kDim);
+  WorkPoint w;
+  w.method = method;
+  double energy = 0, invariant = 0;
+  auto observe = [&](const Vector& y) {
+    energy = std::max(energy, std::fabs(system.Energy(y) - e0));
+    const auto i = problem.Invariants(y.data(), y.data() + System::kDim);
+    for (std::size_t k = 0; k < i.size(); ++k)
+      invariant = std::max(invariant, std::fabs(i[k] - i0[k]));
+  };
+  Vector y = start;
+  std::function<void(bool)> run;  // one run; observe or not
+  if (IsAdaptive(method)) {
+    w.tolerance = knob;
+    run = [&](bool with_observer) {
+      y = start;
+      System counted(problem);
+      const RunReport r = odeint_peers::Dopri5(counted, y, t_end, knob);
+      w.steps = r.steps;
+      w.evaluations = r.evaluations;
+      w.status = ToString(r.status);
+      if (with_observer) observe(y);  // endpoint only: no dense output
+    };
+  } else if (ExternalMethods().count(method)) {
+    w.steps = static_cast<long>(knob);
+    w.h = t_end / w.steps;
+    run = [&](bool with_observer) {
+      const ExternalRun r =
+          ExternalMethods().at(method)(problem_name, y0, t_end, w.steps);
+      w.evaluations = r.evaluations;
+      w.iterations = r.iterations;
+      w.status = r.status;
+      if (r.states.empty()) return;
+      y = Vector::Map(r.states.back().data());
+      if (with_observer)
+        for (const auto& s : r.states) observe(Vector::Map(s.data()));
+    };
+  } else {
+    w.steps = static_cast<long>(knob);
+    w.h = t_end / w.steps;
+    CheckRunArguments(w.h, w.steps);
+    run = [&](bool with_observer) {
+      auto stepper = MakeAnyStepper<Problem>(method, system);
+      y = start;
+      const RunReport r =
+          with_observer
+              ? Integrate(stepper, y, w.h, w.steps,
+                          [&](double, const Vector& x) { observe(x); })
+              : Integrate(stepper, y, w.h, w.steps);
+      w.evaluations = r.evaluations;
+      w.iterations = r.iterations;
+      w.iterations_per_step = r.iterations_per_step();
+      w.status = ToString(r.status);
+    };
+  }
+  run(true);
+  w.energy_error = energy / e_scale;
+  w.invariant_error = i0.empty() ? NAN : invariant;
+  w.error = 0;
+  for (int i = 0; i < y.size(); ++i)
+    w.error = std::max(w.error, std::fabs(y[i] - reference[i]));
+  if (w.status != "ok") w.error = NAN;
+  // Timing without the observer, so invariants are not charged to a method.
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const auto begin = std::chrono::steady_clock::now();
+    run(false);
+    t.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+            .count());
+  }
+  std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
+  w.seconds = t[repeats / 2];
+  return w;
+}
+
+}  // namespace vivp::steppers
