@@ -107,6 +107,11 @@ int RunBench(const BenchOptions& o) {
                        "' for " + problem->name +
                        "; valid: " + Join(problem->methods));
   const std::vector<double> steps = ParseSteps(o.steps);
+  for (const auto& m : methods)
+    for (double k : steps)
+      if (!steppers::IsAdaptive(m) && k != std::floor(k))
+        throw UsageError("--steps: step counts must be whole numbers for " + m +
+                         ", got " + std::to_string(k));
   if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
@@ -121,12 +126,8 @@ int RunBench(const BenchOptions& o) {
       sweep =
           steppers::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
     } else {
-      for (double k : steps) {
-        if (!steppers::IsAdaptive(m) && k != std::floor(k))
-          throw UsageError("--steps: step counts must be whole numbers, got " +
-                           std::to_string(k));
+      for (double k : steps)
         sweep.push_back(problem->measure(m, k, static_cast<int>(o.repeats)));
-      }
     }
     for (const auto& w : sweep) {
       PrintRow(human, w);

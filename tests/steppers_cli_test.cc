@@ -1,0 +1,101 @@
+// `vivp bench` end to end: bad input exits with status 2 and one line naming
+// the valid values; a good run writes JSON rows with every measured field,
+// the error falls with the step at the method's order, and an unstable
+// configuration is a status in the rows, not a crash.
+#define BOOST_TEST_MODULE steppers_cli
+#include <sys/wait.h>
+
+#include <array>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Run {
+  int status;
+  std::string output;
+};
+
+Run Vivp(const std::string& args, bool with_stderr = true) {
+  const std::string cmd = std::string(VIVP_EXE) + " " + args +
+                          (with_stderr ? " 2>&1" : " 2>/dev/null");
+  FILE* pipe = popen(cmd.c_str(), "r");
+  BOOST_REQUIRE(pipe != nullptr);
+  std::string out;
+  std::array<char, 4096> buf;
+  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe))
+    out.append(buf.data(), n);
+  const int raw = pclose(pipe);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+int Lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(BenchBadInput_ExitsTwoWithOneLineNamingValidValues) {
+  struct Case {
+    const char* args;
+    const char* expect;
+  };
+  const Case cases[] = {
+      {"bench --problem nope", "valid: harmonic, pendulum"},
+      {"bench --problem kepler --methods rk4,foo", "valid: rk4, midpoint"},
+      {"bench --problem nldnls --methods verlet", "valid: rk4, midpoint"},
+      {"bench --problem kepler --steps -3", "positive"},
+      {"bench --problem kepler --steps nan", "positive"},
+      {"bench --problem kepler --steps 10.5 --methods rk4", "whole numbers"},
+      {"bench --problem kepler --repeats 2", "at least 5"},
+      {"bench --problem kepler --budget inf", "finite"},
+  };
+  for (const auto& c : cases) {
+    const Run r = Vivp(c.args);
+    BOOST_TEST_CONTEXT(c.args) {
+      BOOST_TEST(r.status == 2);
+      BOOST_TEST(Lines(r.output) == 1);
+      BOOST_TEST(r.output.find(c.expect) != std::string::npos, r.output);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(BenchJson_RowsCarryEveryMeasureAndFitTheOrder) {
+  const Run r = Vivp(
+      "bench --problem pendulum --methods gauss2,odeint_dopri5 "
+      "--steps 64,128,256 --json -",
+      false);
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  BOOST_TEST(j.at("problem") == "pendulum");
+  BOOST_REQUIRE(j.at("rows").size() == 6u);
+  for (const auto& row : j.at("rows")) {
+    for (const char* key : {"method", "steps", "error", "energy_error",
+                            "seconds", "evaluations", "iterations", "status"})
+      BOOST_TEST(row.contains(key), key);
+    BOOST_TEST(row.at("status") == "ok");
+    BOOST_TEST(row.at("seconds").get<double>() > 0);
+    BOOST_TEST(row.at("evaluations").get<long>() > 0);
+  }
+  // gauss2 at 64, 128, 256 steps over 10 periods: order 4 within ±0.15.
+  const double e64 = j["rows"][0]["error"], e256 = j["rows"][2]["error"];
+  BOOST_TEST(std::fabs(std::log2(e64 / e256) / 2 - 4) <= 0.15);
+  BOOST_TEST(j["rows"][0]["iterations"].get<long>() > 0);
+}
+
+BOOST_AUTO_TEST_CASE(BenchUnstableConfiguration_IsAStatusNotACrash) {
+  // RK4 on the harmonic oscillator at 3 steps for 10 periods: hω ≈ 21.
+  const Run r =
+      Vivp("bench --problem harmonic --methods rk4,midpoint --steps 3 --json -",
+           false);
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  BOOST_TEST(j["rows"][0]["status"] == "unstable");
+  BOOST_TEST(j["rows"][0]["error"].is_null());
+  BOOST_TEST(j["rows"][1]["status"] == "ok");
+}
