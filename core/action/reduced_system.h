@@ -63,6 +63,23 @@ class ReducedSystem {
     }
   }
 
+  // The density's arguments at node i on the diagonal x₋ = 0:
+  // p = (x₊, v₊), m = (x₋, v₋) = 0.
+  void NodePoint(const std::vector<Real>* x, const std::vector<Real>* v, int i,
+                 Real* p, Real* m) const {
+    for (int c = 0; c < d; ++c) {
+      p[c] = x[c][i];
+      p[d + c] = v[c][i];
+      m[c] = m[d + c] = Real(0);
+    }
+  }
+
+  auto DensityOf() const {
+    return [this](const auto* pv, const auto* mv) {
+      return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
+    };
+  }
+
   void Residual(const Real* y, Real* f) const {
     std::vector<Real> x[d], v[d], w[d];
     Paths(y, x, v);
@@ -70,16 +87,8 @@ class ReducedSystem {
     for (int c = 0; c < d; ++c) w[c].assign(n_, Real(0));
     for (int i = 0; i < n_; ++i) {
       Real p[2 * d], m[2 * d];
-      for (int c = 0; c < d; ++c) {
-        p[c] = x[c][i];
-        p[d + c] = v[c][i];
-        m[c] = m[d + c] = Real(0);
-      }
-      const auto g = ad::MinusGradient<Real, 2 * d, 2 * d>(
-          [&](const auto* pv, const auto* mv) {
-            return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
-          },
-          p, m);
+      NodePoint(x, v, i, p, m);
+      const auto g = ad::MinusGradient<Real, 2 * d, 2 * d>(DensityOf(), p, m);
       const Real h = D.NormWeight(i);
       for (int c = 0; c < d; ++c) {
         f[NodeRow(i, c)] = h * g[c];
@@ -120,16 +129,8 @@ class ReducedSystem {
     const auto& D = dbar_.base();
     for (int i = node_begin; i < node_end; ++i) {
       Real p[2 * d], m[2 * d];
-      for (int c = 0; c < d; ++c) {
-        p[c] = x[c][i];
-        p[d + c] = v[c][i];
-        m[c] = m[d + c] = Real(0);
-      }
-      const auto mixed = ad::Mixed<Real, 2 * d, 2 * d>(
-          [&](const auto* pv, const auto* mv) {
-            return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
-          },
-          p, m);
+      NodePoint(x, v, i, p, m);
+      const auto mixed = ad::Mixed<Real, 2 * d, 2 * d>(DensityOf(), p, m);
       // Rows: (x₋, v₋) of node i; columns: (x₊, v₊). Both map to path
       // values through the same local map, since v± = D̄x± (linear part).
       const Eigen::Matrix<Real, 2 * d, 2 * d> a = D.NormWeight(i) * mixed.dmp;
