@@ -73,6 +73,65 @@ T DensityPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
   return Density(problem, x1, v1, x2, v2);
 }
 
+// Λ alone in average/difference variables (zero when the problem has none).
+template <class P, class T>
+T LambdaPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
+                  const T* vm) {
+  constexpr int d = P::kDim;
+  T x1[d], v1[d], x2[d], v2[d];
+  for (int c = 0; c < d; ++c) {
+    x1[c] = xp[c] + T(0.5) * xm[c];
+    x2[c] = xp[c] - T(0.5) * xm[c];
+    v1[c] = vp[c] + T(0.5) * vm[c];
+    v2[c] = vp[c] - T(0.5) * vm[c];
+  }
+  return problem.Lambda(x1, v1, x2, v2);
+}
+
+// ∂f/∂m and ∂²f/∂m∂p of the ± density at m = 0, p = (x₊, v₊). Because
+// L(p + m/2) − L(p − m/2) is odd in m, its part is exactly ∇L(p) and ∇²L(p):
+// one evaluation of L with second-order AD instead of two. Λ, if present,
+// adds its own mixed derivatives.
+template <class Real, class P>
+ad::MixedDerivatives<Real, 2 * P::kDim, 2 * P::kDim> DiagonalDerivatives(
+    const P& problem, const Real* p) {
+  constexpr int d = P::kDim;
+  const auto h = ad::Hessian<Real, 2 * d>(
+      [&](const auto* z) { return problem(z, z + d); }, p);
+  ad::MixedDerivatives<Real, 2 * d, 2 * d> out{h.gradient, h.hessian};
+  if constexpr (HasLambda<P>) {
+    Real m[2 * d] = {};
+    const auto lam = ad::Mixed<Real, 2 * d, 2 * d>(
+        [&](const auto* pv, const auto* mv) {
+          return LambdaPlusMinus(problem, pv, pv + d, mv, mv + d);
+        },
+        p, m);
+    out.dm += lam.dm;
+    out.dmp += lam.dmp;
+  }
+  return out;
+}
+
+// ∂f/∂m of the ± density at m = 0 (the residual's pointwise part).
+template <class Real, class P>
+Eigen::Matrix<Real, 2 * P::kDim, 1> DiagonalGradient(const P& problem,
+                                                     const Real* p) {
+  constexpr int d = P::kDim;
+  Eigen::Matrix<Real, 2 * d, 1> g =
+      ad::Gradient<Real, 2 * d>(
+          [&](const auto* z) { return problem(z, z + d); }, p)
+          .second;
+  if constexpr (HasLambda<P>) {
+    Real m[2 * d] = {};
+    g += ad::MinusGradient<Real, 2 * d, 2 * d>(
+        [&](const auto* pv, const auto* mv) {
+          return LambdaPlusMinus(problem, pv, pv + d, mv, mv + d);
+        },
+        p, m);
+  }
+  return g;
+}
+
 // The mass matrix ∂²L/∂v∂v at (x, v).
 template <class Real, class P>
 Eigen::Matrix<Real, P::kDim, P::kDim> MassMatrix(const P& problem,

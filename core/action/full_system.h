@@ -97,7 +97,9 @@ class FullSystem {
 
   // ∇S, matrix-free: H ∂f/∂x + D̄ᵀ H ∂f/∂v per path, plus multiplier terms.
   void Residual(const Real* u, Real* g) const {
-    std::vector<Real> x[2][d], v[2][d], w[2][d];
+    auto& x = scratch_.x;
+    auto& v = scratch_.v;
+    auto& w = scratch_.w;
     Paths(u, x, v);
     const auto& D = dbar_.base();
     for (int a = 0; a < 2; ++a)
@@ -113,7 +115,8 @@ class FullSystem {
           w[a][c][i] = h * grad[2 * a * d + d + c];
         }
     }
-    std::vector<Real> dtw(n_);
+    auto& dtw = scratch_.dtw;
+    dtw.resize(n_);
     for (int a = 0; a < 2; ++a)
       for (int c = 0; c < d; ++c) {
         D.ApplyTranspose(std::span<const Real>(w[a][c]), std::span<Real>(dtw));
@@ -149,7 +152,8 @@ class FullSystem {
   // entries (see ReducedSystem::Jacobian).
   template <class Sink>
   void Jacobian(const Real* u, Sink& sink, int node_begin, int node_end) const {
-    std::vector<Real> x[2][d], v[2][d];
+    auto& x = scratch_.x;
+    auto& v = scratch_.v;
     Paths(u, x, v);
     const auto& D = dbar_.base();
     for (int i = node_begin; i < node_end; ++i) {
@@ -212,6 +216,11 @@ class FullSystem {
   State x_init_, v_init_;
   int order_;
   int n_;
+  // Work arrays reused across evaluations (see ReducedSystem).
+  struct Scratch {
+    std::vector<Real> x[2][d], v[2][d], w[2][d], dtw;
+  };
+  mutable Scratch scratch_;
 };
 
 }  // namespace vivp::action

@@ -63,39 +63,34 @@ class ReducedSystem {
     }
   }
 
-  // The density's arguments at node i on the diagonal x₋ = 0:
-  // p = (x₊, v₊), m = (x₋, v₋) = 0.
+  // The density's arguments at node i on the diagonal x₋ = 0: p = (x₊, v₊).
   void NodePoint(const std::vector<Real>* x, const std::vector<Real>* v, int i,
-                 Real* p, Real* m) const {
+                 Real* p) const {
     for (int c = 0; c < d; ++c) {
       p[c] = x[c][i];
       p[d + c] = v[c][i];
-      m[c] = m[d + c] = Real(0);
     }
   }
 
-  auto DensityOf() const {
-    return [this](const auto* pv, const auto* mv) {
-      return DensityPlusMinus(problem_, pv, pv + d, mv, mv + d);
-    };
-  }
-
   void Residual(const Real* y, Real* f) const {
-    std::vector<Real> x[d], v[d], w[d];
+    auto& x = scratch_.x;
+    auto& v = scratch_.v;
+    auto& w = scratch_.w;
     Paths(y, x, v);
     const auto& D = dbar_.base();
     for (int c = 0; c < d; ++c) w[c].assign(n_, Real(0));
     for (int i = 0; i < n_; ++i) {
-      Real p[2 * d], m[2 * d];
-      NodePoint(x, v, i, p, m);
-      const auto g = ad::MinusGradient<Real, 2 * d, 2 * d>(DensityOf(), p, m);
+      Real p[2 * d];
+      NodePoint(x, v, i, p);
+      const auto g = DiagonalGradient<Real>(problem_, p);
       const Real h = D.NormWeight(i);
       for (int c = 0; c < d; ++c) {
         f[NodeRow(i, c)] = h * g[c];
         w[c][i] = h * g[d + c];
       }
     }
-    std::vector<Real> dtw(n_);
+    auto& dtw = scratch_.dtw;
+    dtw.resize(n_);
     for (int c = 0; c < d; ++c) {
       D.ApplyTranspose(std::span<const Real>(w[c]), std::span<Real>(dtw));
       dtw[0] += dbar_.penalty() * w[c][0];  // D̄ᵀ = Dᵀ + penalty E0
@@ -124,13 +119,14 @@ class ReducedSystem {
   // interior stretch reveal the band without the cost of a full assembly.
   template <class Sink>
   void Jacobian(const Real* y, Sink& sink, int node_begin, int node_end) const {
-    std::vector<Real> x[d], v[d];
+    auto& x = scratch_.x;
+    auto& v = scratch_.v;
     Paths(y, x, v);
     const auto& D = dbar_.base();
     for (int i = node_begin; i < node_end; ++i) {
-      Real p[2 * d], m[2 * d];
-      NodePoint(x, v, i, p, m);
-      const auto mixed = ad::Mixed<Real, 2 * d, 2 * d>(DensityOf(), p, m);
+      Real p[2 * d];
+      NodePoint(x, v, i, p);
+      const auto mixed = DiagonalDerivatives<Real>(problem_, p);
       // Rows: (x₋, v₋) of node i; columns: (x₊, v₊). Both map to path
       // values through the same local map, since v± = D̄x± (linear part).
       const Eigen::Matrix<Real, 2 * d, 2 * d> a = D.NormWeight(i) * mixed.dmp;
@@ -175,6 +171,13 @@ class ReducedSystem {
   State x_init_, v_init_;
   int order_;
   int n_;
+  // Work arrays reused across evaluations: at Nt = 2^20 fresh allocations
+  // cost more in page faults than the stencil work. (Not thread-safe: one
+  // system per thread.)
+  struct Scratch {
+    std::vector<Real> x[d], v[d], w[d], dtw;
+  };
+  mutable Scratch scratch_;
 };
 
 }  // namespace vivp::action
