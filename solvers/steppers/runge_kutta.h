@@ -22,7 +22,7 @@
 namespace vivp::steppers {
 
 struct NewtonOptions {
-  int max_iterations = 60;
+  int max_iterations = 100;
   // Re-evaluate Df when the contraction rate of a solve exceeds this.
   double refresh_rate = 0.25;
 };
@@ -125,6 +125,16 @@ class RungeKutta {
       if (rate < 1) {
         z += Eigen::Map<const Eigen::MatrixXd>(dz.data(), kN, s);
         if (it > 1) worst_rate = std::max(worst_rate, rate);
+        // Slow contraction with a Df from an earlier step: refresh it now and
+        // continue from the current iterate.
+        if (!fresh && it > 1 && rate > options_.refresh_rate &&
+            size > 4 * kEps * scale) {
+          df_ = system_.FieldJacobian(y);
+          Factor(h);
+          fresh = true;
+          previous = std::numeric_limits<double>::infinity();
+          continue;
+        }
       }
       // Round-off reached: the increment no longer changes the state, or it
       // stagnated at the round-off level.
