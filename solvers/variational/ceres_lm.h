@@ -190,7 +190,10 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   report.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
-  return detail::Finish(problem, prep.dbar, full, u, report, Path::kCeresLm);
+  IvpSolution<double> s =
+      detail::Finish(problem, prep.dbar, full, u, report, Path::kCeresLm);
+  detail::CheckResolution(problem, grid, s);
+  return s;
 }
 
 }  // namespace vivp

@@ -34,6 +34,7 @@
 #include "core/sbp/builder.h"
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/newton.h"
+#include "solvers/variational/resolution.h"
 
 namespace vivp {
 
@@ -133,6 +134,36 @@ IvpSolution<Real> Finish(const P& problem,
   s.residual_norm = report.residual_norm;
   s.seconds = report.seconds;
   return s;
+}
+
+// Marks a converged solve as not converged when Δt·ω at the initial or final
+// state exceeds the operator's stability limit (resolution.h).
+template <class P, class Real>
+void CheckResolution(const P& problem, const Grid& grid, IvpSolution<Real>& s) {
+  if (!s.status.converged || s.order != 2) return;
+  constexpr int d = P::kDim;
+  const double dt = (grid.t_end - grid.t_start) / double(grid.points - 1);
+  double omega = 0;
+  for (int i : {0, s.points() - 1}) {
+    double x[d], v[d];
+    for (int c = 0; c < d; ++c) {
+      x[c] = double(s.x1(i, c));
+      v[c] = double(s.velocity(i, c));
+    }
+    omega = std::max(omega, FastestFrequency(problem, x, v));
+  }
+  const double limit = StabilityLimit(grid.op);
+  if (dt * omega > limit) {
+    const long long needed =
+        static_cast<long long>(std::ceil((grid.t_end - grid.t_start) * omega /
+                                         limit)) + 1;
+    s.status.converged = false;
+    s.status.reason =
+        "under-resolved: dt*omega = " + std::to_string(dt * omega) +
+        " exceeds the stability limit " + std::to_string(limit) + " of " +
+        grid.op + " (the discrete solution grows without bound); use at "
+        "least " + std::to_string(needed) + " points";
+  }
 }
 
 // Everything a solve needs before the critical-point search: the checked
@@ -263,7 +294,10 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
         "SolveIvp runs the Newton paths; Levenberg-Marquardt is SolveIvpCeres "
         "(solvers/variational/ceres_lm.h)");
   }
-  return detail::Finish(problem, prep.dbar, full, u, report, options.path);
+  IvpSolution<Real> s =
+      detail::Finish(problem, prep.dbar, full, u, report, options.path);
+  detail::CheckResolution(problem, grid, s);
+  return s;
 }
 
 }  // namespace vivp
