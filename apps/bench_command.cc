@@ -37,7 +37,10 @@ std::vector<std::string> SplitList(const std::string& s) {
 
 std::string Join(const std::vector<std::string>& v) {
   std::string out;
-  for (const auto& s : v) out += (out.empty() ? "" : ", ") + s;
+  for (const auto& s : v) {
+    out += out.empty() ? "" : ", ";
+    out += s;
+  }
   return out;
 }
 

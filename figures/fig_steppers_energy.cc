@@ -35,9 +35,14 @@ int main(int argc, char** argv) {
             rows.push_back({t / (2 * M_PI),
                             std::max(std::fabs(system.Energy(x) - e0), 1e-17)});
         });
-    plots += (plots.empty() ? "" : ", ") + std::string("'") +
-             fig.Data(m, rows, "orbit abs_energy_error") +
-             "' using 1:2 with lines lw 2 title '" + m + "'";
+    plots += plots.empty() ? "" : ", ";
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, bug 105329)
+    // on chains of std::string operator+.
+    plots += "'";
+    plots += fig.Data(m, rows, "orbit abs_energy_error");
+    plots += "' using 1:2 with lines lw 2 title '";
+    plots += m;
+    plots += "'";
   }
   fig.script() << "set logscale xy\nset format y '10^{%L}'\n"
                << "set xlabel 'orbits'\nset ylabel '|H - H_0|'\n"

@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
       const std::string file = fig.Data(m, rows, "seconds error");
       // Peers dashed, so the two families read apart.
       const bool peer = m.rfind("odeint_", 0) == 0;
-      plots += (plots.empty() ? "" : ", ") + std::string("'") + file +
+      plots += plots.empty() ? "" : ", ";
+      plots += std::string("'") + file +
                "' using 1:2 with linespoints lw 2 pt " + std::to_string(style) +
                (peer ? " dt 2" : "") + " title '" + m + "'";
       ++style;

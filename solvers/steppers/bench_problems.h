@@ -155,7 +155,8 @@ inline const BenchProblem& FindBenchProblem(const std::string& name) {
   std::string valid;
   for (const auto& p : BenchProblems()) {
     if (p.name == name) return p;
-    valid += (valid.empty() ? "" : ", ") + p.name;
+    valid += valid.empty() ? "" : ", ";
+    valid += p.name;
   }
   throw std::invalid_argument("unknown problem '" + name +
                               "'; valid: " + valid);
@@ -183,7 +184,10 @@ inline std::vector<WorkPoint> Sweep(const BenchProblem& p,
     const WorkPoint& w = rows.back();
     // An unstable coarse step is a result, and finer steps may be stable.
     const bool ok = w.status == "ok";
-    if ((ok && !(w.error > floor)) || (ok && w.error > 0.5 * previous) ||
+    // Stagnation is judged only near round-off (below 1e-9); above that a
+    // slow fall is the pre-asymptotic regime, not a floor.
+    const bool stagnated = w.error < 1e-9 && w.error > 0.5 * previous;
+    if ((ok && !(w.error > floor)) || (ok && stagnated) ||
         w.seconds > budget_seconds)
       break;
     if (ok) previous = w.error;

@@ -98,8 +98,10 @@ AnyStepper<Problem> MakeStepper(const std::string& name,
     if (name == "discrete_gradient")
       return S(DiscreteGradient<Problem>(system));
   std::string valid;
-  for (const auto& n : MethodsFor<Problem>())
-    valid += (valid.empty() ? "" : ", ") + n;
+  for (const auto& n : MethodsFor<Problem>()) {
+    valid += valid.empty() ? "" : ", ";
+    valid += n;
+  }
   throw std::invalid_argument("unknown or inapplicable method '" + name +
                               "'; valid for this problem: " + valid);
 }

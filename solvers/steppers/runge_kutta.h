@@ -24,7 +24,7 @@ namespace vivp::steppers {
 struct NewtonOptions {
   int max_iterations = 100;
   // Re-evaluate Df when the contraction rate of a solve exceeds this.
-  double refresh_rate = 0.25;
+  double refresh_rate = 0.5;
 };
 
 template <class Problem>

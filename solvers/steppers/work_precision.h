@@ -98,8 +98,10 @@ AnyStepper<Problem> MakeAnyStepper(const std::string& name,
     return MakeStepper<Problem>(name, system);
   } catch (const std::invalid_argument&) {
     std::string valid;
-    for (const auto& n : WorkPrecisionMethods<Problem>())
-      valid += (valid.empty() ? "" : ", ") + n;
+    for (const auto& n : WorkPrecisionMethods<Problem>()) {
+      valid += valid.empty() ? "" : ", ";
+      valid += n;
+    }
     throw std::invalid_argument("unknown or inapplicable method '" + name +
                                 "'; valid for this problem: " + valid);
   }
