@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     plots += fig.Data(m, rows, "orbit abs_energy_error");
     plots += "' using 1:2 with lines lw 2 title '";
     plots += m;
-    plots += "'";
+    plots += "' noenhanced";
   }
   fig.script() << "set logscale xy\nset format y '10^{%L}'\n"
                << "set xlabel 'orbits'\nset ylabel '|H - H_0|'\n"

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
       plots += plots.empty() ? "" : ", ";
       plots += std::string("'") + file +
                "' using 1:2 with linespoints lw 2 pt " + std::to_string(style) +
-               (peer ? " dt 2" : "") + " title '" + m + "'";
+               (peer ? " dt 2" : "") + " title '" + m + "' noenhanced";
       ++style;
     }
     fig.script() << "set logscale xy\nset format xy '10^{%L}'\n"
