@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "apps/command.h"
+#include "core/sbp/builder.h"
 #include "solvers/variational/registry.h"
 
 namespace vivp::app {

@@ -6,7 +6,13 @@
 
 #include <limits>
 
+#include "problems/anharmonic.h"
+#include "problems/coupled_oscillators.h"
+#include "problems/damped_oscillator.h"
+#include "problems/exponential.h"
+#include "problems/free_fall.h"
 #include "solvers/variational/registry.h"
+#include "solvers/variational/solve_ivp.h"
 
 using namespace vivp;
 namespace bdata = boost::unit_test::data;

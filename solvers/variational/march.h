@@ -23,44 +23,11 @@
 #include <functional>
 #include <vector>
 
+#include "solvers/variational/march_types.h"
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp {
 
-enum class HandOff { kCorrected, kNaive };
-
-struct MarchOptions {
-  long long window_points = 32;
-  HandOff hand_off = HandOff::kCorrected;
-  int max_split_depth = 4;   // fallback: halve a failing window up to 4 times
-  bool keep_trajectory = true;
-  SolveOptions solve;        // per-window solver settings
-};
-
-struct WindowReport {
-  double t_start = 0, t_end = 0;
-  long long points = 0;
-  int iterations = 0;
-  int fallbacks = 0;  // splits needed below this window
-  bool converged = false;
-  double position_error_estimate = 0;  // |M⁻¹λ4|∞
-  double velocity_error_estimate = 0;  // |(Dx)_N − M⁻¹(−λ3)|∞
-};
-
-struct MarchResult {
-  Status status;
-  std::vector<double> t;  // stitched grid (if kept)
-  Eigen::MatrixXd x, v;   // positions and D x per node (if kept)
-  std::vector<double> end_position, end_velocity;  // handed-off final state
-  std::vector<WindowReport> windows;
-  int fallbacks = 0;
-  int iterations = 0;
-  double error_estimate = 0;  // Σ of the per-window position estimates
-  double seconds = 0;
-};
-
-// Called with (t, x, v) of every node, in order, each node once.
-using NodeObserver = std::function<void(double, const double*, const double*)>;
 
 namespace detail {
 
