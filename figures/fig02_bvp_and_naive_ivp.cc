@@ -9,6 +9,7 @@
 
 #include "core/sbp/builder.h"
 #include "figures/solver_figures.h"
+#include "problems/free_fall.h"
 
 namespace {
 
@@ -40,11 +41,7 @@ int main(int argc, char** argv) {
   const auto d = vivp::sbp::MakeOperator<double>("sbp21", 32);
   const Eigen::VectorXd x = SolveBvp(d, p.m, p.g, p.x0, ff.exact(1.0).x[0]);
 
-  Panel bvp{"BVP, eq. (23): SBP21, N_t = 32",
-            "t",
-            "x(t)",
-            {},
-            "set key below horizontal"};
+  Panel bvp{"BVP, eq. (23): SBP21, N_t = 32", "t", "x(t)", {}, ""};
   bvp.series.push_back(Curve(
       "exact", [&](double t) { return ff.exact(t).x[0]; }, 0, 1, kGrayLine));
   bvp.series.push_back({"x", {}, kRedCircles});

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "figures/solver_figures.h"
+#include "problems/damped_oscillator.h"
 
 int main(int argc, char** argv) {
   using namespace vivp::figures;

@@ -37,7 +37,9 @@ std::filesystem::path PanelFigure(const std::filesystem::path& dir,
     const Panel& panel = panels[p];
     // reset keeps each panel's settings from leaking into the next one.
     s << "reset\nset origin " << double(p) / n << ",0\nset size " << 1.0 / n
-      << ",1\nset grid\nset key box opaque\n"
+      << ",1\nset grid\nset key box opaque below horizontal\n"
+      << "set bmargin 6\nset autoscale fix\n"
+      << "set offsets graph 0.02, graph 0.02, graph 0.05, graph 0.05\n"
       << "set title '" << panel.title << "'\nset xlabel '" << panel.xlabel
       << "'\nset ylabel '" << panel.ylabel << "'\n"
       << panel.settings << "\nplot ";
@@ -79,7 +81,7 @@ Series PathSeries(const std::string& title,
 
 Panel PathsPanel(const NamedProblem& problem, const IvpSolution<double>& s,
                  const std::string& title) {
-  Panel panel{title, "t", "x(t)", {}, "set key below horizontal"};
+  Panel panel{title, "t", "x(t)", {}, ""};
   panel.series.push_back(Curve(
       "exact", [&](double t) { return problem.exact(t).x[0]; }, s.t.front(),
       s.t.back(), kGrayLine));
@@ -120,8 +122,13 @@ std::filesystem::path ConvergenceFigure(
         "{/Symbol D}t = 1/N_t",
         q == Quantity::kValue ? "|x_N - x(t_2)|" : "|(Dx)_N - dx/dt(t_2)|",
         {},
-        "set logscale xy\nset format y '10^{%L}'\n"
-        "set key bottom right\nset offsets graph 0.05, graph 0.05"};
+        "set logscale xy\nset format y '10^{%L}'\n"};
+    // Tics at the grids of the study, labelled 1/Nt.
+    std::string tics;
+    for (const auto& r : series.front().study.rows)
+      tics += (tics.empty() ? "'1/" : ", '1/") + std::to_string(r.points) +
+              "' " + Fixed(r.dt, 17);
+    panel.settings += "set xtics (" + tics + ")\n";
     for (std::size_t k = 0; k < series.size(); ++k) {
       const ConvergenceSeries& cs = series[k];
       // Exact zeros (round-off cancelled completely) have no logarithm.
