@@ -47,8 +47,11 @@ std::filesystem::path PanelFigure(const std::filesystem::path& dir,
     for (std::size_t k = 0; k < panel.series.size(); ++k) {
       const Series& c = panel.series[k];
       if (c.rows.empty()) continue;  // gnuplot refuses empty data files
-      const auto file = fig.Data(
-          "p" + std::to_string(p) + "_" + std::to_string(k), c.rows, "x y");
+      // Built by append: GCC 12 warns falsely (-Wrestrict, bug 105329) on
+      // chains of std::string operator+.
+      std::string name = "p";
+      name.append(std::to_string(p)).append("_").append(std::to_string(k));
+      const auto file = fig.Data(name, c.rows, "x y");
       s << (first ? "" : ", \\\n     ") << "'" << file << "' using 1:2 with "
         << c.with << " title '" << c.title << "'";
       first = false;

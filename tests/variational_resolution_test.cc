@@ -9,7 +9,9 @@
 using namespace vivp;
 namespace bdata = boost::unit_test::data;
 
-namespace {
+// Named (not anonymous) namespace: the data-driven test case's lambdas
+// capture it, and GCC warns (-Wsubobject-linkage) on anonymous types there.
+namespace resolution_test {
 
 // ẍ = −ω²x with ω² = k.
 struct Spring {
@@ -25,7 +27,10 @@ double MaxAbs(const IvpSolution<double>& s) {
   return s.x1.cwiseAbs().maxCoeff();
 }
 
-}  // namespace
+}  // namespace resolution_test
+
+using resolution_test::MaxAbs;
+using resolution_test::Spring;
 
 BOOST_DATA_TEST_CASE(StabilityLimit_IsWhereTheSolutionStopsBeingBounded,
                      bdata::make({"sbp21", "sbp42", "sbp63", "sbp84"}), op) {
