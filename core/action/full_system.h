@@ -112,16 +112,19 @@ class FullSystem {
       for (int a = 0; a < 2; ++a)
         for (int c = 0; c < d; ++c) {
           g[X(a, i, c)] = h * grad[2 * a * d + c];
-          w[a][c][i] = h * grad[2 * a * d + d + c];
+          w[a][c][i] = grad[2 * a * d + d + c];
         }
     }
-    auto& dtw = scratch_.dtw;
-    dtw.resize(n_);
+    // D̄ᵀ H w = B w − H D w + penalty·H_0 w_0 e_0 (SBP property; see
+    // ReducedSystem::Residual for why D is applied to w rather than Dᵀ to Hw).
+    auto& dw = scratch_.dtw;
+    dw.resize(n_);
     for (int a = 0; a < 2; ++a)
       for (int c = 0; c < d; ++c) {
-        D.ApplyTranspose(std::span<const Real>(w[a][c]), std::span<Real>(dtw));
-        dtw[0] += dbar_.penalty() * w[a][c][0];
-        for (int j = 0; j < n_; ++j) g[X(a, j, c)] += dtw[j];
+        D.Apply(std::span<const Real>(w[a][c]), std::span<Real>(dw));
+        for (int j = 0; j < n_; ++j) g[X(a, j, c)] -= D.NormWeight(j) * dw[j];
+        g[X(a, 0, c)] += (-dbar_.sigma0() - Real(1)) * w[a][c][0];
+        g[X(a, n_ - 1, c)] += w[a][c][n_ - 1];
       }
     for (int c = 0; c < d; ++c) {
       g[Lambda1(c)] = x[0][c][0] - x_init_[c];

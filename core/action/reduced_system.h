@@ -86,15 +86,19 @@ class ReducedSystem {
       const Real h = D.NormWeight(i);
       for (int c = 0; c < d; ++c) {
         f[NodeRow(i, c)] = h * g[c];
-        w[c][i] = h * g[d + c];
+        w[c][i] = g[d + c];  // the momentum-like ∂f/∂v₋ at node i
       }
     }
-    auto& dtw = scratch_.dtw;
-    dtw.resize(n_);
+    // D̄ᵀ H w through the SBP property HD + DᵀH = B: DᵀHw = Bw − H D w, so
+    // the only stencil work is D applied (in its exact-on-constants
+    // difference form) to w; D̄ᵀ = Dᵀ + penalty·E0 adds penalty·H_0 w_0.
+    auto& dw = scratch_.dtw;
+    dw.resize(n_);
     for (int c = 0; c < d; ++c) {
-      D.ApplyTranspose(std::span<const Real>(w[c]), std::span<Real>(dtw));
-      dtw[0] += dbar_.penalty() * w[c][0];  // D̄ᵀ = Dᵀ + penalty E0
-      for (int j = 0; j < n_; ++j) f[NodeRow(j, c)] += dtw[j];
+      D.Apply(std::span<const Real>(w[c]), std::span<Real>(dw));
+      for (int j = 0; j < n_; ++j) f[NodeRow(j, c)] -= D.NormWeight(j) * dw[j];
+      f[NodeRow(0, c)] += (-dbar_.sigma0() - Real(1)) * w[c][0];  // penalty·H_0 = −σ0
+      f[NodeRow(n_ - 1, c)] += w[c][n_ - 1];
       f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
       f[c] = x[c][0] - x_init_[c];
       if (order_ == 2) {

@@ -20,6 +20,15 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
   for (const Rational& w : table.norm_weights) weights_.push_back(w.As<Real>());
   for (const Rational& c : table.interior_stencil)
     interior_.push_back(c.As<Real>());
+  // Apply evaluates the interior as Σ_k c_k (u_{i+k} − u_{i−k}).
+  const auto& st = table.interior_stencil;
+  for (int k = 0; k <= half_width_; ++k) {
+    const Rational& a = st[half_width_ + k];
+    const Rational& b = st[half_width_ - k];
+    if (a.num * b.den != -b.num * a.den)
+      throw std::logic_error(std::string(table.name) +
+                             ": interior stencil is not antisymmetric");
+  }
   for (int i = 0; i < table.boundary_rows(); ++i) {
     const auto& src = table.boundary_block[i];
     std::vector<Real> l, r(src.size());
@@ -57,12 +66,14 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
   CheckSize(u.size(), out.size());
   const int r = boundary_rows();
   for (int i = 0; i < r; ++i) out[i] = ApplyRow(i, u.data());
-  const int w = static_cast<int>(interior_.size());
+  // Interior: the central stencil is antisymmetric (checked in the
+  // constructor), Σ_k c_k (u_{i+k} − u_{i−k}), the difference form of
+  // ApplyRow without the reference subtraction.
   for (int i = r; i < n_ - r; ++i) {
-    const T* ui = u.data() + (i - half_width_);
+    const T* ui = u.data() + i;
     T acc = Lift<T>(Real(0));
-    for (int j = 0; j < w; ++j)
-      if (interior_[j] != Real(0)) AddScaled(acc, interior_[j], ui[j]);
+    for (int k = 1; k <= half_width_; ++k)
+      AddScaled(acc, interior_[half_width_ + k], T(ui[k] - ui[-k]));
     out[i] = Scaled(inv_dt_, acc);
   }
   for (int i = n_ - r; i < n_; ++i) out[i] = ApplyRow(i, u.data());
@@ -73,14 +84,17 @@ template <class T>
 void Operator<Real>::ApplyTranspose(std::span<const T> u,
                                     std::span<T> out) const {
   CheckSize(u.size(), out.size());
-  // Scatter each row i of D into the columns it touches: out += u_i * D[i][:].
-  for (int j = 0; j < n_; ++j) out[j] = Lift<T>(Real(0));
-  for (int i = 0; i < n_; ++i) {
-    const Row rw = row(i);
-    const T ui = Scaled(inv_dt_, u[i]);
-    for (std::size_t j = 0; j < rw.coeffs.size(); ++j)
-      if (rw.coeffs[j] != Real(0)) AddScaled(out[rw.first + j], rw.coeffs[j], ui);
-  }
+  // Through the SBP property H D + Dᵀ H = B: Dᵀ u = B H⁻¹u − H D H⁻¹u.
+  // A scatter of the columns of D would sum terms of size |u|/dt that cancel
+  // to the result; this form reuses the difference evaluation of D (ApplyRow)
+  // and so inherits its exact annihilation of constants: DᵀHD·1 = 0 exactly,
+  // which an assembled DᵀHD does not give (formulation §1.8).
+  std::vector<T> g(u.size());
+  for (int i = 0; i < n_; ++i) g[i] = Scaled(Real(1) / NormWeight(i), u[i]);
+  Apply(std::span<const T>(g), out);
+  for (int i = 0; i < n_; ++i) out[i] = Scaled(-NormWeight(i), out[i]);
+  out[0] = out[0] - g[0];
+  out[n_ - 1] = out[n_ - 1] + g[n_ - 1];
 }
 
 template <class Real>
