@@ -45,6 +45,12 @@ class ReducedSystem {
   int size() const { return (n_ + multiplier_blocks()) * d; }
   const sbp::RegularizedOperator<Real>& dbar() const { return dbar_; }
   const State& x_init() const { return x_init_; }
+  // New initial data for the same grid (time-slab marching reuses the
+  // system, its scratch space and its Jacobian from window to window).
+  void SetInitial(const State& x_init, const State& v_init) {
+    x_init_ = x_init;
+    v_init_ = v_init;
+  }
 
   int X(int node, int c) const { return node * d + c; }
   int Lambda3(int c) const { return n_ * d + c; }

@@ -21,6 +21,10 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "solvers/variational/march_types.h"
@@ -31,6 +35,138 @@ namespace vivp {
 
 namespace detail {
 
+// Solves windows of one length. The operators, the reduced system with its
+// scratch space, and the Jacobian factorization are built once and reused:
+// the Lagrangian does not depend on t, so every window of the same length has
+// the same discrete equations up to the initial data. A linear problem is
+// thus factored once and each window costs back-substitutions and residuals
+// (the chord steps of solvers::Newton with a FactorCache); a nonlinear one
+// starts each window from the previous window's factorization and refactors
+// only when the chord steps stop contracting.
+template <class P>
+class WindowEngine {
+ public:
+  static constexpr int d = P::kDim;
+  using State = std::array<double, d>;
+
+  WindowEngine(const P& problem, const Grid& global, long long points,
+               int order)
+      : problem_(problem),
+        grid_(WindowGrid(global, points)),
+        dbar_(sbp::MakeOperator<double>(grid_.op, grid_.points, 0.0,
+                                        grid_.t_end),
+              grid_.sigma0),
+        system_(problem, dbar_, State{}, State{}, order),
+        y_(system_.size(), 0.0) {}
+
+  const sbp::Operator<double>& D() const { return dbar_.base(); }
+  int order() const { return system_.order(); }
+  // The last solved window: position and velocity D x of DOF c at node i.
+  double x(int i, int c) const { return xc_[c][i]; }
+  double v(int i, int c) const { return v_[c][i]; }
+  double end_velocity(int c) const { return end_v_[c]; }
+
+  struct Outcome {
+    solvers::NewtonReport report;
+    CorrectedEnd<double> end;
+    std::string failure;     // empty on success
+    bool split_helps = true;  // false: a shorter window has the same Δt
+  };
+
+  // Solves the window that starts at `initial`. On success the nodes are in
+  // x(i, c), the velocities D x in v(i, c) if `velocities` is set.
+  Outcome Solve(const InitialData& initial, const solvers::NewtonOptions& newton,
+                bool velocities) {
+    Outcome o;
+    State x0{}, v0{};
+    for (int c = 0; c < d; ++c) {
+      x0[c] = initial.x[c];
+      v0[c] = initial.v.empty() ? 0.0 : initial.v[c];
+    }
+    system_.SetInitial(x0, v0);
+    // Guess: a Taylor polynomial with the previous window's mean second
+    // derivative (order 2) or slope (order 1); the multipliers stay at the
+    // previous window's values, which change slowly from window to window.
+    const auto& D = dbar_.base();
+    const int n = D.points();
+    for (int i = 0; i < n; ++i) {
+      const double tau = D.t(i);
+      for (int c = 0; c < d; ++c)
+        y_[system_.X(i, c)] =
+            order() == 2 ? x0[c] + tau * (v0[c] + 0.5 * tau * trend_[c])
+                         : x0[c] + tau * trend_[c];
+    }
+    o.report = solvers::Newton<double>(system_, y_, newton, {}, &cache_);
+    if (!o.report.converged) {
+      cache_.valid = false;
+      o.failure = o.report.reason;
+      return o;
+    }
+    for (int c = 0; c < d; ++c) {
+      xc_[c].resize(n);
+      for (int i = 0; i < n; ++i) xc_[c][i] = y_[system_.X(i, c)];
+    }
+    double xe[2][d], ve[2][d];
+    for (int k = 0; k < 2; ++k) {
+      const int i = k == 0 ? 0 : n - 1;
+      for (int c = 0; c < d; ++c) {
+        xe[k][c] = xc_[c][i];
+        ve[k][c] = D.ApplyRow(i, xc_[c].data());
+      }
+    }
+    if (order() == 2) {
+      std::string why = UnderResolution(problem_, grid_, xe[0], ve[0], xe[1],
+                                        ve[1]);
+      if (!why.empty()) {
+        o.failure = std::move(why);
+        o.split_helps = false;
+        return o;
+      }
+    }
+    for (int c = 0; c < d; ++c) end_v_[c] = ve[1][c];
+    double l3[d], l4[d];
+    for (int c = 0; c < d; ++c) {
+      l3[c] = y_[system_.Lambda3(c)];
+      l4[c] = order() == 2 ? y_[system_.Lambda4(c)] : 0.0;
+    }
+    o.end = CorrectEnd<double>(problem_, order(), xe[1], ve[1], l3,
+                               order() == 2 ? l4 : nullptr);
+    const double length = grid_.t_end;
+    for (int c = 0; c < d; ++c)
+      trend_[c] = order() == 2 ? (o.end.velocity[c] - v0[c]) / length
+                               : (o.end.position[c] - x0[c]) / length;
+    if (velocities) {
+      for (int c = 0; c < d; ++c) {
+        v_[c].resize(n);
+        D.Apply(std::span<const double>(xc_[c]), std::span<double>(v_[c]));
+      }
+    }
+    return o;
+  }
+
+  long long factorizations() const { return cache_.factorizations; }
+
+ private:
+  static Grid WindowGrid(const Grid& global, long long points) {
+    Grid g = global;
+    const double dt = (global.t_end - global.t_start) / double(global.points - 1);
+    g.t_start = 0.0;
+    g.t_end = dt * double(points - 1);
+    g.points = points;
+    return g;
+  }
+
+  const P& problem_;
+  Grid grid_;
+  sbp::RegularizedOperator<double> dbar_;
+  action::ReducedSystem<P, double> system_;
+  std::vector<double> y_;
+  solvers::FactorCache<double> cache_;
+  State trend_{};
+  std::vector<double> xc_[d], v_[d];
+  double end_v_[d] = {};
+};
+
 template <class P>
 struct Marcher {
   static constexpr int d = P::kDim;
@@ -40,11 +176,51 @@ struct Marcher {
   const NodeObserver& observer;
   MarchResult& out;
   int min_points;
+  int order;
+  long long emitted = 0;  // global index of the next node to emit
+  std::vector<double> xs, vs;
+  std::map<long long, std::unique_ptr<WindowEngine<P>>> engines;
 
-  // Solves one window from `initial`, splitting on failure. Emits its nodes
-  // except the last (the next window starts there) and returns the hand-off.
+  bool EngineApplies() const {
+    return options.solve.path == Path::kReducedNewton &&
+           !options.solve.extended_residual;
+  }
+
+  WindowEngine<P>& Engine(long long points) {
+    auto& e = engines[points];
+    if (!e) e = std::make_unique<WindowEngine<P>>(problem, global, points, order);
+    return *e;
+  }
+
+  // Solves one window from `initial`, falling back to a fresh solve and then
+  // to halving on failure. Emits its nodes except the last (the next window
+  // starts there) and updates `initial` to the hand-off state.
   bool Window(InitialData& initial, double t0, double t1, long long points,
               int depth, bool last_of_march) {
+    const bool want_nodes = bool(observer) || options.keep_trajectory;
+    if (depth == 0 && EngineApplies()) {
+      WindowEngine<P>& e = Engine(points);
+      auto o = e.Solve(initial, options.solve.newton, want_nodes);
+      if (o.failure.empty()) {
+        Record(t0, t1, points, o.report, depth, o.end);
+        const int emit = last_of_march ? int(points) : int(points) - 1;
+        double x[d], v[d];
+        for (int i = 0; i < emit && want_nodes; ++i) {
+          for (int c = 0; c < d; ++c) {
+            x[c] = e.x(i, c);
+            v[c] = e.v(i, c);
+          }
+          Emit(x, v);
+        }
+        HandOff(initial, o.end, &e, nullptr);
+        return true;
+      }
+      if (!o.split_helps) {
+        out.status = {false, Where(t0, t1) + o.failure};
+        return false;
+      }
+      ++out.fallbacks;  // retried below from the default guess, then halved
+    }
     Grid g = global;
     g.t_start = t0;
     g.t_end = t1;
@@ -53,9 +229,7 @@ struct Marcher {
     if (!s.status.converged) {
       const long long half = (points + 1) / 2;
       if (depth >= options.max_split_depth || half < min_points) {
-        out.status = {false, "window [" + std::to_string(t0) + ", " +
-                                 std::to_string(t1) + "] did not converge: " +
-                                 s.status.reason};
+        out.status = {false, Where(t0, t1) + s.status.reason};
         return false;
       }
       ++out.fallbacks;
@@ -64,51 +238,79 @@ struct Marcher {
              Window(initial, tm, t1, points - half + 1, depth + 1,
                     last_of_march);
     }
+    solvers::NewtonReport r;
+    r.iterations = s.iterations;
+    Record(t0, t1, points, r, depth, s.corrected);
+    const int emit = last_of_march ? s.points() : s.points() - 1;
+    double x[d], v[d];
+    for (int i = 0; i < emit && want_nodes; ++i) {
+      for (int c = 0; c < d; ++c) {
+        x[c] = s.x1(i, c);
+        v[c] = s.velocity(i, c);
+      }
+      Emit(x, v);
+    }
+    HandOff(initial, s.corrected, nullptr, &s);
+    return true;
+  }
+
+  static std::string Where(double t0, double t1) {
+    return "window [" + std::to_string(t0) + ", " + std::to_string(t1) +
+           "] did not converge: ";
+  }
+
+  void Record(double t0, double t1, long long points,
+              const solvers::NewtonReport& r, int depth,
+              const CorrectedEnd<double>& end) {
     WindowReport w;
     w.t_start = t0;
     w.t_end = t1;
     w.points = points;
-    w.iterations = s.iterations;
+    w.iterations = r.iterations;
+    w.corrections = r.corrections;
     w.converged = true;
     w.fallbacks = depth;
-    w.position_error_estimate = s.corrected.position_error_estimate;
-    w.velocity_error_estimate = s.corrected.velocity_error_estimate;
+    w.position_error_estimate = end.position_error_estimate;
+    w.velocity_error_estimate = end.velocity_error_estimate;
     out.windows.push_back(w);
-    out.iterations += s.iterations;
+    out.iterations += r.iterations;
+    out.corrections += r.corrections;
     out.error_estimate += w.position_error_estimate;
-    const int emit = last_of_march ? s.points() : s.points() - 1;
-    for (int i = 0; i < emit; ++i) Emit(s, i);
-    // Hand-off.
-    const int n = s.points() - 1;
-    for (int c = 0; c < d; ++c) {
-      if (options.hand_off == HandOff::kCorrected) {
-        initial.x[c] = s.corrected.position[c];
-        if (s.order == 2) initial.v[c] = s.corrected.velocity[c];
-      } else {
-        initial.x[c] = s.x1(n, c);
-        if (s.order == 2) initial.v[c] = s.velocity(n, c);
-      }
-    }
-    return true;
   }
 
-  void Emit(const IvpSolution<double>& s, int i) {
-    double x[d], v[d];
+  // The next window's initial data: the corrected end state (default) or the
+  // naive (x_N, (Dx)_N) from the engine or the fresh solve.
+  void HandOff(InitialData& initial, const CorrectedEnd<double>& end,
+               const WindowEngine<P>* e, const IvpSolution<double>* s) const {
     for (int c = 0; c < d; ++c) {
-      x[c] = s.x1(i, c);
-      v[c] = s.velocity(i, c);
+      if (options.hand_off == HandOff::kCorrected) {
+        initial.x[c] = end.position[c];
+        if (order == 2) initial.v[c] = end.velocity[c];
+      } else if (e) {
+        const int n = e->D().points() - 1;
+        initial.x[c] = e->x(n, c);
+        if (order == 2) initial.v[c] = e->end_velocity(c);
+      } else {
+        const int n = s->points() - 1;
+        initial.x[c] = s->x1(n, c);
+        if (order == 2) initial.v[c] = s->velocity(n, c);
+      }
     }
-    if (observer) observer(s.t[i], x, v);
+  }
+
+  void Emit(const double* x, const double* v) {
+    const double dt =
+        (global.t_end - global.t_start) / double(global.points - 1);
+    const double t = global.t_start + dt * double(emitted++);
+    if (observer) observer(t, x, v);
     if (options.keep_trajectory) {
-      out.t.push_back(s.t[i]);
+      out.t.push_back(t);
       for (int c = 0; c < d; ++c) {
         xs.push_back(x[c]);
         vs.push_back(v[c]);
       }
     }
   }
-
-  std::vector<double> xs, vs;
 };
 
 }  // namespace detail
@@ -130,8 +332,10 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
         "); use --slab-points >= " + std::to_string(min_points) +
         " or 0 for one global solve");
   MarchResult out;
-  detail::Marcher<P> m{problem, options, grid, observer, out, min_points, {}, {}};
   InitialData state = initial;
+  const int order = detail::CheckInitialData(problem, state);
+  detail::Marcher<P> m{problem, options, grid, observer, out,
+                       min_points, order, 0, {}, {}, {}};
   const long long intervals = grid.points - 1;
   const long long per_window = options.window_points - 1;
   long long done = 0;

@@ -23,7 +23,8 @@ struct MarchOptions {
 struct WindowReport {
   double t_start = 0, t_end = 0;
   long long points = 0;
-  int iterations = 0;
+  int iterations = 0;   // Jacobian factorizations (0: an earlier one reused)
+  int corrections = 0;  // Newton, chord and refinement steps
   int fallbacks = 0;  // splits needed below this window
   bool converged = false;
   double position_error_estimate = 0;  // |M⁻¹λ4|∞
@@ -37,7 +38,8 @@ struct MarchResult {
   std::vector<double> end_position, end_velocity;  // handed-off final state
   std::vector<WindowReport> windows;
   int fallbacks = 0;
-  int iterations = 0;
+  int iterations = 0;   // Jacobian factorizations over all windows
+  int corrections = 0;  // solves with a factorization over all windows
   double error_estimate = 0;  // Σ of the per-window position estimates
   double seconds = 0;
 };

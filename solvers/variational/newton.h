@@ -82,14 +82,31 @@ inline double Since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace detail
 
+// A factorized Jacobian that outlives one solve. Time-slab marching solves
+// one window after another with the same operator: for a linear problem the
+// Jacobian is the same matrix every time, and for a nonlinear one the
+// previous window's is a good approximation. Newton then starts with chord
+// (simplified Newton) steps on the cached factorization and refactors only
+// when they stop contracting — "factor once, back-substitute per window".
+template <class Real>
+struct FactorCache {
+  bool valid = false;
+  linalg::BandedMatrix<Real> jac;
+  BandedLu<Real> lu;  // refers to jac
+  int kl = 0, ku = 0;
+  long long factorizations = 0;  // over the cache's lifetime
+};
+
 // `residual_override`, when given, replaces system.Residual for every
 // residual evaluation (e.g. the same residual evaluated in long double: mixed
-// precision iterative refinement).
+// precision iterative refinement). `cache`, when given, supplies a
+// factorization to start from and keeps the last one for the next call.
 template <class Real, class System>
 NewtonReport Newton(
     const System& system, std::vector<Real>& y,
     const NewtonOptions& options = {},
-    const std::function<void(const Real*, Real*)>& residual_override = {}) {
+    const std::function<void(const Real*, Real*)>& residual_override = {},
+    FactorCache<Real>* cache = nullptr) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   NewtonReport report;
@@ -99,13 +116,19 @@ NewtonReport Newton(
                                               : Real(32) * eps;
   const Real stagnation_floor = std::sqrt(eps);
 
-  // Closure rows reach at most twice the widest boundary row into the grid.
-  const linalg::BandwidthProbe probe =
-      linalg::ProbeBand(system, y.data(), system.points(), 32);
-  report.kl = probe.kl;
-  report.ku = probe.ku;
-  linalg::BandedMatrix<Real> jac(n, probe.kl, probe.ku);
-  BandedLu<Real> lu;
+  FactorCache<Real> local;
+  FactorCache<Real>& fc = cache ? *cache : local;
+  if (fc.valid && fc.jac.size() != n) fc.valid = false;
+  if (!fc.valid) {
+    // Closure rows reach at most twice the widest boundary row into the grid.
+    const linalg::BandwidthProbe probe =
+        linalg::ProbeBand(system, y.data(), system.points(), 32);
+    fc.kl = probe.kl;
+    fc.ku = probe.ku;
+    fc.jac = linalg::BandedMatrix<Real>(n, probe.kl, probe.ku);
+  }
+  report.kl = fc.kl;
+  report.ku = fc.ku;
   std::vector<Real> f(n);
 
   auto residual = [&] {
@@ -127,21 +150,31 @@ NewtonReport Newton(
 
   if (!residual()) return finish(false, "non-finite residual at the initial guess");
   Real previous_step = std::numeric_limits<Real>::infinity();
+  // A factorization carried over from an earlier solve is stale: it may take
+  // more (chord) corrections, as long as each contracts.
+  bool stale = fc.valid;
+  constexpr int kChordSteps = 8;
   while (report.iterations < options.max_iterations) {
-    auto t0 = Clock::now();
-    jac.SetZero();
-    system.Jacobian(y.data(), jac);
-    report.seconds.assembly += detail::Since(t0);
-    t0 = Clock::now();
-    const bool ok = lu.Factor(jac);
-    report.seconds.factorization += detail::Since(t0);
-    ++report.iterations;
-    if (!ok) return finish(false, "singular Jacobian at iteration " +
-                                      std::to_string(report.iterations));
-    for (int r = 0; r <= options.refinement_steps; ++r) {
-      std::vector<Real>& delta = f;  // solve in place: δ = −J⁻¹F
+    if (!fc.valid) {
+      auto t0 = Clock::now();
+      fc.jac.SetZero();
+      system.Jacobian(y.data(), fc.jac);
+      report.seconds.assembly += detail::Since(t0);
       t0 = Clock::now();
-      lu.Solve(delta.data());
+      const bool ok = fc.lu.Factor(fc.jac);
+      report.seconds.factorization += detail::Since(t0);
+      ++report.iterations;
+      ++fc.factorizations;
+      if (!ok) return finish(false, "singular Jacobian at iteration " +
+                                        std::to_string(report.iterations));
+      fc.valid = true;
+      stale = false;
+    }
+    const int inner = stale ? kChordSteps : options.refinement_steps;
+    for (int r = 0; r <= inner; ++r) {
+      std::vector<Real>& delta = f;  // solve in place: δ = −J⁻¹F
+      auto t0 = Clock::now();
+      fc.lu.Solve(delta.data());
       report.seconds.solve += detail::Since(t0);
       const Real step = detail::MaxAbs(delta);
       for (int i = 0; i < n; ++i) y[i] -= delta[i];
@@ -161,17 +194,17 @@ NewtonReport Newton(
         return finish(true, "refinement converged (estimated remaining error " +
                                 std::to_string(double(theta / (1 - theta) * step)) +
                                 ")");
-      if (step >= Real(0.5) * previous_step) {
+      previous_step = step;
+      if (theta >= Real(0.5)) {
         // Corrections stopped shrinking: round-off if already tiny.
         if (step <= stagnation_floor * scale)
           return finish(true, "corrections stagnated at round-off level");
-        if (r > 0) {
-          previous_step = step;
-          break;  // refinement no longer helps: re-linearise
-        }
+        if (r > 0 || stale) break;  // refinement no longer helps
       }
-      previous_step = step;
     }
+    // Re-linearise at the current point: after a fresh factorization's
+    // refinement budget, or when the (stale or fresh) corrections stall.
+    fc.valid = false;
   }
   return finish(false, "no convergence in " +
                            std::to_string(options.max_iterations) +

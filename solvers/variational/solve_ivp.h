@@ -48,6 +48,47 @@ inline void CheckFinite(const std::vector<double>& v, const char* what) {
                                   "data must be finite");
 }
 
+// The multiplier-corrected end state (formulation §1.8) from the end node
+// (x_N, (Dx)_N) and the multipliers: λ3 = −p(T), and x_N + M⁻¹λ4 is the
+// quadrature of the integral form of x, one order better than x_N
+// (first-order systems: x_N + C⁻¹λ3, C the coefficient of ẋ).
+template <class Real, class P>
+CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
+                              const Real* vn, const Real* lambda3,
+                              const Real* lambda4) {
+  constexpr int d = P::kDim;
+  using Mat = Eigen::Matrix<Real, d, d>;
+  using Vec = Eigen::Matrix<Real, d, 1>;
+  Vec l3, xv, vv;
+  for (int c = 0; c < d; ++c) {
+    l3[c] = lambda3[c];
+    xv[c] = xn[c];
+    vv[c] = vn[c];
+  }
+  CorrectedEnd<Real> e;
+  if (order == 2) {
+    Vec l4;
+    for (int c = 0; c < d; ++c) l4[c] = lambda4[c];
+    const auto lu = action::MassMatrix<Real>(problem, xn, vn).fullPivLu();
+    const Vec shift = lu.solve(l4);
+    const Vec momentum = -l3;
+    const Vec velocity = lu.solve(momentum);
+    for (int c = 0; c < d; ++c) {
+      e.position.push_back(xv[c] + shift[c]);
+      e.momentum.push_back(momentum[c]);
+      e.velocity.push_back(velocity[c]);
+    }
+    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
+    e.velocity_error_estimate = double((vv - velocity).cwiseAbs().maxCoeff());
+  } else {
+    const Mat coeff = action::FirstOrderCoefficient<Real>(problem, xn, vn);
+    const Vec shift = coeff.fullPivLu().solve(l3);
+    for (int c = 0; c < d; ++c) e.position.push_back(xv[c] + shift[c]);
+    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
+  }
+  return e;
+}
+
 template <class P, class Real>
 IvpSolution<Real> Finish(const P& problem,
                          const sbp::RegularizedOperator<Real>& dbar,
@@ -92,42 +133,13 @@ IvpSolution<Real> Finish(const P& problem,
   full.Residual(u.data(), g.data());
   s.gradient_norm = double(solvers::detail::MaxAbs(g));
 
-  // Multiplier-corrected end state (formulation §1.8): λ3 = −p(T), and
-  // x_N + M⁻¹λ4 is the trapezoid-free quadrature of the integral form of x.
   Real xn[d], vn[d];
   for (int c = 0; c < d; ++c) {
     xn[c] = s.x1(n - 1, c);
     vn[c] = s.velocity(n - 1, c);
   }
-  using Mat = Eigen::Matrix<Real, d, d>;
-  using Vec = Eigen::Matrix<Real, d, 1>;
-  Vec l3, l4, xv, vv;
-  for (int c = 0; c < d; ++c) {
-    l3[c] = s.lambda3[c];
-    xv[c] = xn[c];
-    vv[c] = vn[c];
-  }
-  auto& e = s.corrected;
-  if (s.order == 2) {
-    for (int c = 0; c < d; ++c) l4[c] = s.lambda4[c];
-    const Mat mass = action::MassMatrix<Real>(problem, xn, vn);
-    const Vec shift = mass.fullPivLu().solve(l4);
-    const Vec momentum = -l3;
-    const Vec velocity = mass.fullPivLu().solve(momentum);
-    for (int c = 0; c < d; ++c) {
-      e.position.push_back(xv[c] + shift[c]);
-      e.momentum.push_back(momentum[c]);
-      e.velocity.push_back(velocity[c]);
-    }
-    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
-    e.velocity_error_estimate = double((vv - velocity).cwiseAbs().maxCoeff());
-  } else {
-    // First order: x_N + C⁻¹λ3, C the coefficient of ẋ (1 for Λ = ẋ₊x₋).
-    const Mat coeff = action::FirstOrderCoefficient<Real>(problem, xn, vn);
-    const Vec shift = coeff.fullPivLu().solve(l3);
-    for (int c = 0; c < d; ++c) e.position.push_back(xv[c] + shift[c]);
-    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
-  }
+  s.corrected = CorrectEnd<Real>(problem, s.order, xn, vn, s.lambda3.data(),
+                                 s.order == 2 ? s.lambda4.data() : nullptr);
   s.status.converged = report.converged;
   s.status.reason = report.reason;
   s.iterations = report.iterations;
@@ -136,34 +148,77 @@ IvpSolution<Real> Finish(const P& problem,
   return s;
 }
 
-// Marks a converged solve as not converged when Δt·ω at the initial or final
-// state exceeds the operator's stability limit (resolution.h).
+// Why the grid is too coarse for the problem, or "" if it is not: Δt·ω at
+// the two given states (x, v per DOF) must stay below the operator's
+// stability limit (resolution.h).
+template <class P>
+std::string UnderResolution(const P& problem, const Grid& grid,
+                            const double* xa, const double* va,
+                            const double* xb, const double* vb) {
+  const double dt = (grid.t_end - grid.t_start) / double(grid.points - 1);
+  const double omega = std::max(FastestFrequency(problem, xa, va),
+                                FastestFrequency(problem, xb, vb));
+  const double limit = StabilityLimit(grid.op);
+  if (dt * omega <= limit) return "";
+  const long long needed =
+      static_cast<long long>(std::ceil((grid.t_end - grid.t_start) * omega /
+                                       limit)) + 1;
+  return "under-resolved: dt*omega = " + std::to_string(dt * omega) +
+         " exceeds the stability limit " + std::to_string(limit) + " of " +
+         grid.op + " (the discrete solution grows without bound); use at "
+         "least " + std::to_string(needed) + " points";
+}
+
+// Marks a converged solve as not converged when the grid is under-resolved.
 template <class P, class Real>
 void CheckResolution(const P& problem, const Grid& grid, IvpSolution<Real>& s) {
   if (!s.status.converged || s.order != 2) return;
   constexpr int d = P::kDim;
-  const double dt = (grid.t_end - grid.t_start) / double(grid.points - 1);
-  double omega = 0;
-  for (int i : {0, s.points() - 1}) {
-    double x[d], v[d];
+  double x[2][d], v[2][d];
+  for (int k = 0; k < 2; ++k) {
+    const int i = k == 0 ? 0 : s.points() - 1;
     for (int c = 0; c < d; ++c) {
-      x[c] = double(s.x1(i, c));
-      v[c] = double(s.velocity(i, c));
+      x[k][c] = double(s.x1(i, c));
+      v[k][c] = double(s.velocity(i, c));
     }
-    omega = std::max(omega, FastestFrequency(problem, x, v));
   }
-  const double limit = StabilityLimit(grid.op);
-  if (dt * omega > limit) {
-    const long long needed =
-        static_cast<long long>(std::ceil((grid.t_end - grid.t_start) * omega /
-                                         limit)) + 1;
-    s.status.converged = false;
-    s.status.reason =
-        "under-resolved: dt*omega = " + std::to_string(dt * omega) +
-        " exceeds the stability limit " + std::to_string(limit) + " of " +
-        grid.op + " (the discrete solution grows without bound); use at "
-        "least " + std::to_string(needed) + " points";
+  std::string why = UnderResolution(problem, grid, x[0], v[0], x[1], v[1]);
+  if (!why.empty()) s.status = {false, std::move(why)};
+}
+
+// Checks the initial data against the problem (one value per DOF, finite, a
+// velocity exactly when the problem is second order) and returns the order.
+template <class P>
+int CheckInitialData(const P& problem, const InitialData& initial) {
+  constexpr int d = P::kDim;
+  if (static_cast<int>(initial.x.size()) != d)
+    throw std::invalid_argument("initial position has " +
+                                std::to_string(initial.x.size()) +
+                                " components; the problem has " +
+                                std::to_string(d) + " degrees of freedom");
+  CheckFinite(initial.x, "initial position");
+  CheckFinite(initial.v, "initial velocity");
+  const bool has_v = !initial.v.empty();
+  if (has_v && static_cast<int>(initial.v.size()) != d)
+    throw std::invalid_argument("initial velocity has " +
+                                std::to_string(initial.v.size()) +
+                                " components; the problem has " +
+                                std::to_string(d) + " degrees of freedom");
+  double x0[d], v0[d];
+  for (int c = 0; c < d; ++c) {
+    x0[c] = initial.x[c];
+    v0[c] = has_v ? initial.v[c] : 0.0;
   }
+  const int order = action::SystemOrder<double>(problem, x0, v0);
+  if (order == 2 && !has_v)
+    throw std::invalid_argument(
+        "the problem is second order (∂²L/∂v² ≠ 0) and needs an initial "
+        "velocity");
+  if (order == 1 && has_v)
+    throw std::invalid_argument(
+        "the problem is first order (∂²L/∂v² = 0): give no initial "
+        "velocity");
+  return order;
 }
 
 // Everything a solve needs before the critical-point search: the checked
@@ -183,32 +238,11 @@ struct Prepared {
       : D(sbp::MakeOperator<Real>(grid.op, grid.points, Real(grid.t_start),
                                   Real(grid.t_end))),
         dbar(D, Real(grid.sigma0)) {
-    if (static_cast<int>(initial.x.size()) != d)
-      throw std::invalid_argument("initial position has " +
-                                  std::to_string(initial.x.size()) +
-                                  " components; the problem has " +
-                                  std::to_string(d) + " degrees of freedom");
-    CheckFinite(initial.x, "initial position");
-    CheckFinite(initial.v, "initial velocity");
-    const bool has_v = !initial.v.empty();
-    if (has_v && static_cast<int>(initial.v.size()) != d)
-      throw std::invalid_argument("initial velocity has " +
-                                  std::to_string(initial.v.size()) +
-                                  " components; the problem has " +
-                                  std::to_string(d) + " degrees of freedom");
+    order = CheckInitialData(problem, initial);
     for (int c = 0; c < d; ++c) {
       x0[c] = Real(initial.x[c]);
-      v0[c] = has_v ? Real(initial.v[c]) : Real(0);
+      v0[c] = initial.v.empty() ? Real(0) : Real(initial.v[c]);
     }
-    order = action::SystemOrder<Real>(problem, x0.data(), v0.data());
-    if (order == 2 && !has_v)
-      throw std::invalid_argument(
-          "the problem is second order (∂²L/∂v² ≠ 0) and needs an initial "
-          "velocity");
-    if (order == 1 && has_v)
-      throw std::invalid_argument(
-          "the problem is first order (∂²L/∂v² = 0): give no initial "
-          "velocity");
     const int n = D.points();
     if (!options.guess.empty() && options.guess.size() != std::size_t(n) * d)
       throw std::invalid_argument("initial guess has " +
