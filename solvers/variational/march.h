@@ -200,7 +200,10 @@ struct Marcher {
     const bool want_nodes = bool(observer) || options.keep_trajectory;
     if (depth == 0 && EngineApplies()) {
       WindowEngine<P>& e = Engine(points);
-      auto o = e.Solve(initial, options.solve.newton, want_nodes);
+      solvers::NewtonOptions newton = options.solve.newton;
+      newton.phase_timings = false;
+      newton.final_residual = false;
+      auto o = e.Solve(initial, newton, want_nodes);
       if (o.failure.empty()) {
         Record(t0, t1, points, o.report, depth, o.end);
         const int emit = last_of_march ? int(points) : int(points) - 1;
@@ -272,7 +275,10 @@ struct Marcher {
     w.fallbacks = depth;
     w.position_error_estimate = end.position_error_estimate;
     w.velocity_error_estimate = end.velocity_error_estimate;
-    out.windows.push_back(w);
+    // Per-window reports grow with Nt/W: kept with the trajectory only, so a
+    // streamed march stays O(window) in memory.
+    if (options.keep_trajectory) out.windows.push_back(w);
+    ++out.window_count;
     out.iterations += r.iterations;
     out.corrections += r.corrections;
     out.error_estimate += w.position_error_estimate;

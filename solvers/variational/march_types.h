@@ -13,10 +13,16 @@ namespace vivp {
 enum class HandOff { kCorrected, kNaive };
 
 struct MarchOptions {
-  long long window_points = 32;
+  // Default by measurement (bench/march_bench, SBP42, Nt = 2^18, points per
+  // second): damped oscillator W = 16/32/48/64/128: 7.7/9.7/10.9/11.1/7.2 e6;
+  // anharmonic 3.5/3.8/4.0/3.5/2.2 e6 (from 128 points on, the previous
+  // window's Jacobian stops contracting and most windows refactor). 48 is
+  // within noise of the best for both; end errors grow slowly with W
+  // (damped at T = 3277: 4.9e-7 at 32, 5.8e-7 at 48).
+  long long window_points = 48;
   HandOff hand_off = HandOff::kCorrected;
   int max_split_depth = 4;   // fallback: halve a failing window up to 4 times
-  bool keep_trajectory = true;
+  bool keep_trajectory = true;  // also keeps the per-window reports
   SolveOptions solve;        // per-window solver settings
 };
 
@@ -36,7 +42,8 @@ struct MarchResult {
   std::vector<double> t;  // stitched grid (if kept)
   Eigen::MatrixXd x, v;   // positions and D x per node (if kept)
   std::vector<double> end_position, end_velocity;  // handed-off final state
-  std::vector<WindowReport> windows;
+  std::vector<WindowReport> windows;  // one per window, if keep_trajectory
+  long long window_count = 0;
   int fallbacks = 0;
   int iterations = 0;   // Jacobian factorizations over all windows
   int corrections = 0;  // solves with a factorization over all windows

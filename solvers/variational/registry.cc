@@ -79,7 +79,7 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
   MarchOptions mo;
   mo.window_points = slab_points;
   mo.solve = options;
-  const MarchResult m = problem.march(grid, mo);
+  const MarchResult m = problem.march(grid, mo, {});
   ConvergenceRow r;
   r.points = grid.points;
   const std::size_t last = m.t.size() - 1;

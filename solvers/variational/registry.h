@@ -27,7 +27,10 @@ struct NamedProblem {
   std::string description;
   InitialData initial;
   std::function<IvpSolution<double>(const Grid&, const SolveOptions&)> solve;
-  std::function<MarchResult(const Grid&, const MarchOptions&)> march;
+  // The observer (may be empty) sees every node once, in order.
+  std::function<MarchResult(const Grid&, const MarchOptions&,
+                            const NodeObserver&)>
+      march;
   std::function<ExactState(double t)> exact;
 };
 

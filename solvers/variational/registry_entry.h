@@ -22,8 +22,9 @@ NamedProblem Entry(std::string name, std::string description, P problem,
     if (o.path == Path::kCeresLm) return SolveIvpCeres(problem, initial, g, o);
     return SolveIvp(problem, initial, g, o);
   };
-  e.march = [problem, initial](const Grid& g, const MarchOptions& o) {
-    return MarchIvp(problem, initial, g, o);
+  e.march = [problem, initial](const Grid& g, const MarchOptions& o,
+                                const NodeObserver& observer) {
+    return MarchIvp(problem, initial, g, o, observer);
   };
   e.exact = [problem, exact_fn](double t) {
     ExactState s = exact_fn(problem, t);
