@@ -10,48 +10,13 @@
 // covers it.
 #pragma once
 
-#include <array>
 #include <functional>
-#include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "problems/anharmonic.h"
-#include "problems/harmonic_oscillator.h"
-#include "problems/henon_heiles.h"
-#include "problems/kepler.h"
-#include "problems/nldnls.h"
-#include "problems/pendulum.h"
-#include "solvers/steppers/work_precision.h"
+#include "solvers/steppers/work_point.h"
 
 namespace vivp::steppers {
-
-// The anharmonic oscillator of problems/anharmonic.h with what the steppers
-// need besides H: initial state, quadratic invariants ŷ = (p², q²) with
-// Ĥ = ½ŷ₀ + ¼κŷ₁², and no further invariants.
-struct AnharmonicHamiltonian : problems::Anharmonic {
-  static constexpr bool kSeparable = true;
-  static constexpr int kInvariantCount = 2;
-  template <class T>
-  void QuadraticInvariants(const T* q, const T* p, T* y) const {
-    y[0] = p[0] * p[0];
-    y[1] = q[0] * q[0];
-  }
-  template <class T>
-  T HamiltonianOfInvariants(const T* y) const {
-    return T(0.5) * y[0] + T(0.25 * kappa) * y[1] * y[1];
-  }
-  std::vector<double> Initial() const { return {x0, v0}; }
-  std::vector<double> ExactState(double t) const {
-    const auto s = Exact(t);
-    return {s.x, s.v};
-  }
-  static std::vector<std::string> InvariantNames() { return {}; }
-  std::vector<double> Invariants(const double*, const double*) const {
-    return {};
-  }
-};
 
 struct BenchProblem {
   std::string name, description, reference;
@@ -63,136 +28,19 @@ struct BenchProblem {
       measure;
 };
 
-namespace detail {
+// Compiled once (bench_problems.cc): the stepper templates for every problem
+// and method are instantiated there, not in each program that lists them.
+const std::vector<BenchProblem>& BenchProblems();
 
-template <class Problem>
-BenchProblem MakeBenchProblem(std::string name, std::string description,
-                              Problem problem, double t_end, long first_steps,
-                              std::string reference,
-                              std::function<std::vector<double>()> exact) {
-  BenchProblem b;
-  b.name = name;
-  b.description = std::move(description);
-  b.reference = std::move(reference);
-  b.t_end = t_end;
-  b.first_steps = first_steps;
-  b.methods = WorkPrecisionMethods<Problem>();
-  b.invariant_names = Problem::InvariantNames();
-  // The reference is computed on first use and kept.
-  auto cache = std::make_shared<std::vector<double>>();
-  b.measure = [=](const std::string& method, double knob, int repeats) {
-    if (cache->empty()) *cache = exact();
-    return Measure(name, problem, method, problem.Initial(), *cache, t_end,
-                   knob, repeats);
-  };
-  return b;
-}
-
-// Gauss–Legendre s = 3 with n steps: the reference for problems without a
-// closed form.
-template <class Problem>
-std::vector<double> GaussReference(const Problem& problem, double t_end,
-                                   long n) {
-  using System = HamiltonianSystem<Problem>;
-  const System system(problem);
-  RungeKutta<Problem> stepper(system, Gauss3());
-  const auto init = problem.Initial();
-  typename System::Vector y = System::Vector::Map(init.data());
-  const RunReport r = Integrate(stepper, y, t_end / n, n);
-  if (r.status != Status::kOk)
-    throw std::runtime_error("reference run failed: " + ToString(r.status));
-  return std::vector<double>(y.data(), y.data() + y.size());
-}
-
-}  // namespace detail
-
-inline const std::vector<BenchProblem>& BenchProblems() {
-  static const std::vector<BenchProblem> problems = [] {
-    using detail::MakeBenchProblem;
-    std::vector<BenchProblem> r;
-    const double orbit = 2 * M_PI;
-    r.push_back(MakeBenchProblem(
-        "harmonic", "harmonic oscillator H = ½p² + ½q², 10 periods",
-        problems::HarmonicOscillator{}, 10 * orbit, 64, "exact",
-        [=] { return problems::HarmonicOscillator{}.Exact(10 * orbit); }));
-    r.push_back(MakeBenchProblem(
-        "pendulum",
-        "pendulum H = ½p² − cos q, q(0)=0, p(0)=1, 10 periods of 2π",
-        problems::Pendulum{}, 10 * orbit, 64, "exact (Jacobi sn, cn)",
-        [=] { return problems::Pendulum{}.Exact(10 * orbit); }));
-    r.push_back(MakeBenchProblem(
-        "anharmonic", "anharmonic oscillator H = ½p² + 5q⁴ (seed 000), t = 10",
-        AnharmonicHamiltonian{}, 10.0, 64, "exact (Jacobi cn)",
-        [] { return AnharmonicHamiltonian{}.ExactState(10.0); }));
-    r.push_back(MakeBenchProblem(
-        "kepler", "Kepler e = 0.6, 10 orbits", problems::Kepler{}, 10 * orbit,
-        1000, "exact (Kepler's equation)",
-        [=] { return problems::Kepler{}.Exact(10 * orbit); }));
-    problems::Kepler hard;
-    hard.e = 0.9;
-    r.push_back(MakeBenchProblem("kepler_e09", "Kepler e = 0.9, 3 orbits", hard,
-                                 3 * orbit, 1000, "exact (Kepler's equation)",
-                                 [=] { return hard.Exact(3 * orbit); }));
-    r.push_back(MakeBenchProblem(
-        "henon_heiles", "Hénon–Heiles, q = p = (0.18, 0.18), t = 100",
-        problems::HenonHeiles{}, 100.0, 100, "Gauss–Legendre s = 3, h = 0.005",
-        [] {
-          return detail::GaussReference(problems::HenonHeiles{}, 100.0, 20000);
-        }));
-    r.push_back(MakeBenchProblem(
-        "nldnls",
-        "NLDNLS eq. (6), 32 periodic sites, κ = 1, 2A sech(A n), A = 0.5, t = "
-        "10",
-        problems::Nldnls{}, 10.0, 50, "Gauss–Legendre s = 3, h = 0.001", [] {
-          return detail::GaussReference(problems::Nldnls{}, 10.0, 10000);
-        }));
-    return r;
-  }();
-  return problems;
-}
-
-inline const BenchProblem& FindBenchProblem(const std::string& name) {
-  std::string valid;
-  for (const auto& p : BenchProblems()) {
-    if (p.name == name) return p;
-    valid += valid.empty() ? "" : ", ";
-    valid += p.name;
-  }
-  throw std::invalid_argument("unknown problem '" + name +
-                              "'; valid: " + valid);
-}
+// Throws std::invalid_argument naming the valid problems.
+const BenchProblem& FindBenchProblem(const std::string& name);
 
 // The default sweep of one method: step counts doubling from first_steps (or
 // tolerances 1e-3 … 1e-13 for adaptive methods) until the error reaches the
 // round-off floor or stops falling (accumulated round-off), or a run takes
 // longer than `budget_seconds`.
-inline std::vector<WorkPoint> Sweep(const BenchProblem& p,
-                                    const std::string& method, int repeats,
-                                    double budget_seconds,
-                                    double floor = 1e-13) {
-  std::vector<WorkPoint> rows;
-  if (IsAdaptive(method)) {
-    for (double tol = 1e-3; tol >= 1e-13; tol /= 10) {
-      rows.push_back(p.measure(method, tol, repeats));
-      if (rows.back().seconds > budget_seconds) break;
-    }
-    return rows;
-  }
-  double previous = INFINITY;
-  for (long n = p.first_steps; n <= (1L << 24); n *= 2) {
-    rows.push_back(p.measure(method, static_cast<double>(n), repeats));
-    const WorkPoint& w = rows.back();
-    // An unstable coarse step is a result, and finer steps may be stable.
-    const bool ok = w.status == "ok";
-    // Stagnation is judged only near round-off (below 1e-9); above that a
-    // slow fall is the pre-asymptotic regime, not a floor.
-    const bool stagnated = w.error < 1e-9 && w.error > 0.5 * previous;
-    if ((ok && !(w.error > floor)) || (ok && stagnated) ||
-        w.seconds > budget_seconds)
-      break;
-    if (ok) previous = w.error;
-  }
-  return rows;
-}
+std::vector<WorkPoint> Sweep(const BenchProblem& p, const std::string& method,
+                             int repeats, double budget_seconds,
+                             double floor = 1e-13);
 
 }  // namespace vivp::steppers

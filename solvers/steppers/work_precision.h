@@ -26,52 +26,9 @@
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 #include "solvers/steppers/odeint_peers.h"
+#include "solvers/steppers/work_point.h"
 
 namespace vivp::steppers {
-
-struct WorkPoint {
-  std::string method;
-  long steps = 0;          // fixed-step methods: steps to t_end
-  double tolerance = NAN;  // adaptive methods
-  double h = NAN;
-  double error = NAN;  // max-norm of (q, p) − reference at t_end
-  double energy_error = NAN;  // max |H − H₀| / |H₀| over the run (|H₀| if ≠ 0)
-  double invariant_error = NAN;  // max over invariants of max |I − I₀|
-  double seconds = NAN;          // median wall time of one run
-  long evaluations = 0;
-  long iterations = 0;
-  double iterations_per_step = 0;
-  std::string status = "ok";
-};
-
-// A method from outside the stepper family (the variational solver).
-struct ExternalRun {
-  std::vector<std::vector<double>> states;  // (q, p) at t_k = k·t_end/steps
-  long evaluations = 0, iterations = 0;
-  std::string status = "ok";
-};
-using ExternalMethod = std::function<ExternalRun(const std::string& problem,
-                                                 const std::vector<double>& y0,
-                                                 double t_end, long steps)>;
-
-inline std::map<std::string, ExternalMethod>& ExternalMethods() {
-  static std::map<std::string, ExternalMethod> methods;
-  return methods;
-}
-inline void RegisterExternalMethod(const std::string& name, ExternalMethod m) {
-  ExternalMethods()[name] = std::move(m);
-}
-
-inline const std::vector<std::string>& PeerNames() {
-  static const std::vector<std::string> names = {
-      "odeint_rk4", "odeint_velocity_verlet", "odeint_mclachlan",
-      "odeint_dopri5"};
-  return names;
-}
-
-inline bool IsAdaptive(const std::string& method) {
-  return method == "odeint_dopri5";
-}
 
 template <class Problem>
 std::vector<std::string> WorkPrecisionMethods() {

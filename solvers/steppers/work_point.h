@@ -1,0 +1,58 @@
+// The rows of the work–precision comparison and the hook for methods from
+// outside the stepper family, without the stepper templates: what the
+// users of bench_problems.h need (work_precision.h measures).
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vivp::steppers {
+
+struct WorkPoint {
+  std::string method;
+  long steps = 0;          // fixed-step methods: steps to t_end
+  double tolerance = NAN;  // adaptive methods
+  double h = NAN;
+  double error = NAN;  // max-norm of (q, p) − reference at t_end
+  double energy_error = NAN;  // max |H − H₀| / |H₀| over the run (|H₀| if ≠ 0)
+  double invariant_error = NAN;  // max over invariants of max |I − I₀|
+  double seconds = NAN;          // median wall time of one run
+  long evaluations = 0;
+  long iterations = 0;
+  double iterations_per_step = 0;
+  std::string status = "ok";
+};
+
+// A method from outside the stepper family (the variational solver).
+struct ExternalRun {
+  std::vector<std::vector<double>> states;  // (q, p) at t_k = k·t_end/steps
+  long evaluations = 0, iterations = 0;
+  std::string status = "ok";
+};
+using ExternalMethod = std::function<ExternalRun(const std::string& problem,
+                                                 const std::vector<double>& y0,
+                                                 double t_end, long steps)>;
+
+inline std::map<std::string, ExternalMethod>& ExternalMethods() {
+  static std::map<std::string, ExternalMethod> methods;
+  return methods;
+}
+inline void RegisterExternalMethod(const std::string& name, ExternalMethod m) {
+  ExternalMethods()[name] = std::move(m);
+}
+
+inline const std::vector<std::string>& PeerNames() {
+  static const std::vector<std::string> names = {
+      "odeint_rk4", "odeint_velocity_verlet", "odeint_mclachlan",
+      "odeint_dopri5"};
+  return names;
+}
+
+inline bool IsAdaptive(const std::string& method) {
+  return method == "odeint_dopri5";
+}
+
+}  // namespace vivp::steppers
