@@ -7,12 +7,20 @@
 #include "problems/anharmonic.h"
 #include "problems/damped_oscillator.h"
 #include "problems/kepler.h"
-#include "solvers/variational/march.h"
+#include "solvers/variational/registry.h"
 
 using namespace vivp;
 namespace bdata = boost::unit_test::data;
 
 namespace {
+
+// The solver templates for these problems are compiled once, in the
+// registry (same problems, same initial data: damped x = 1, v = 0;
+// anharmonic x = 1, v = 0.3; Kepler e = 0.6 from pericentre).
+MarchResult March(const char* name, const Grid& g, const MarchOptions& o,
+                     const NodeObserver& observer = {}) {
+  return FindProblem(name).march(g, o, observer);
+}
 
 double EndError(const MarchResult& r, double exact) {
   return std::abs(r.end_position[0] - exact);
@@ -27,11 +35,11 @@ BOOST_DATA_TEST_CASE(DampedSbp42_MarchedWindowsMatchTheGlobalCorrectedEnd,
   problems::DampedOscillator p;
   const Grid g{.op = "sbp42", .points = 16385, .t_end = 204.8};
   const double exact = p.Exact(204.8).x;
-  const auto global = SolveIvp(p, {{1.0}, {0.0}}, g);
+  const auto global = FindProblem("damped").solve(g, {});
   const double global_error = std::abs(global.corrected.position[0] - exact);
   MarchOptions o;
   o.window_points = window;
-  const MarchResult r = MarchIvp(p, {{1.0}, {0.0}}, g, o);
+  const MarchResult r = March("damped", g, o);
   BOOST_TEST(r.status.converged, r.status.reason);
   BOOST_TEST(r.fallbacks == 0);
   BOOST_TEST(EndError(r, exact) <= 2 * global_error,
@@ -57,7 +65,7 @@ BOOST_DATA_TEST_CASE(DampedMarch_KeepsTheGlobalOrder,
     const Grid g{.op = op, .points = n, .t_end = 204.8};
     MarchOptions o;
     o.window_points = 32;
-    const MarchResult r = MarchIvp(p, {{1.0}, {0.0}}, g, o);
+    const MarchResult r = March("damped", g, o);
     BOOST_TEST(r.status.converged);
     dt.push_back(204.8 / double(n - 1));
     err.push_back(EndError(r, p.Exact(204.8).x));
@@ -78,7 +86,7 @@ BOOST_AUTO_TEST_CASE(AnharmonicSbp42_MarchesToTenWithoutFallback) {
     const Grid g{.op = "sbp42", .points = n, .t_end = 10.0};
     MarchOptions o;
     o.window_points = 32;
-    const MarchResult r = MarchIvp(a, {{1.0}, {0.3}}, g, o);
+    const MarchResult r = March("anharmonic", g, o);
     BOOST_TEST(r.status.converged, r.status.reason);
     BOOST_TEST(r.fallbacks == 0);
     dt.push_back(10.0 / double(n - 1));
@@ -105,21 +113,20 @@ BOOST_AUTO_TEST_CASE(NaiveHandOff_DivergesOnTheDampedOscillator) {
         m = std::max(m, std::abs(r.x(i, 0) - p.Exact(r.t[i]).x));
       return m;
     };
-    const double e_naive = max_error(MarchIvp(p, {{1.0}, {0.0}}, g, naive));
-    const double e_good = max_error(MarchIvp(p, {{1.0}, {0.0}}, g, corrected));
+    const double e_naive = max_error(March("damped", g, naive));
+    const double e_good = max_error(March("damped", g, corrected));
     BOOST_TEST(e_naive > 0.1, "Nt " << n << " naive max error " << e_naive);
     BOOST_TEST(e_naive > 50 * e_good);
   }
 }
 
 BOOST_AUTO_TEST_CASE(Observer_SeesEveryNodeOnceInOrder) {
-  problems::DampedOscillator p;
   const Grid g{.op = "sbp42", .points = 1001, .t_end = 10.0};
   MarchOptions o;
   o.window_points = 40;
   o.keep_trajectory = false;
   std::vector<double> seen;
-  const MarchResult r = MarchIvp(p, {{1.0}, {0.0}}, g, o,
+  const MarchResult r = March("damped", g, o,
                                  [&](double t, const double*, const double*) {
                                    seen.push_back(t);
                                  });
@@ -134,14 +141,13 @@ BOOST_AUTO_TEST_CASE(ImpossibleWindow_IsReportedWithReason) {
   // One Newton iteration without refinement cannot solve the anharmonic
   // window; with no splitting allowed the march must say so, not return a
   // silent answer.
-  problems::Anharmonic a;
   const Grid g{.op = "sbp42", .points = 257, .t_end = 10.0};
   MarchOptions o;
   o.window_points = 64;
   o.max_split_depth = 0;
   o.solve.newton.max_iterations = 1;
   o.solve.newton.refinement_steps = 0;
-  const MarchResult r = MarchIvp(a, {{1.0}, {0.3}}, g, o);
+  const MarchResult r = March("anharmonic", g, o);
   BOOST_TEST(!r.status.converged);
   BOOST_TEST(r.status.reason.find("did not converge") != std::string::npos);
   BOOST_TEST(r.status.reason.find("no convergence in 1 iterations") !=
@@ -149,11 +155,10 @@ BOOST_AUTO_TEST_CASE(ImpossibleWindow_IsReportedWithReason) {
 }
 
 BOOST_AUTO_TEST_CASE(WindowBelowOperatorMinimum_IsRejected) {
-  problems::DampedOscillator p;
   MarchOptions o;
   o.window_points = 5;
   BOOST_CHECK_EXCEPTION(
-      MarchIvp(p, {{1.0}, {0.0}}, {.op = "sbp42", .points = 100}, o),
+      March("damped", {.op = "sbp42", .points = 100}, o),
       std::invalid_argument, [](const auto& e) {
         return std::string(e.what()).find("below the minimum of sbp42 (8)") !=
                std::string::npos;
@@ -167,7 +172,7 @@ BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {
   problems::DampedOscillator p;
   MarchOptions o;
   o.window_points = 32;
-  const auto r = MarchIvp(p, {{1.0}, {0.0}},
+  const auto r = March("damped",
                           {.op = "sbp42", .points = 100001, .t_end = 1e4}, o);
   BOOST_TEST(r.status.converged, r.status.reason);
   double max_energy_error = 0;
@@ -185,7 +190,7 @@ BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {
   problems::Kepler k;
   const auto y0 = k.Initial();
   const double T = 200 * M_PI;
-  const auto m = MarchIvp(k, {{y0[0], y0[1]}, {y0[2], y0[3]}},
+  const auto m = March("kepler",
                           {.op = "sbp42", .points = 10001 * 2 - 1, .t_end = T}, o);
   BOOST_TEST(m.status.converged, m.status.reason);
   const double l0 = k.Invariants(y0.data(), y0.data() + 2)[0];
