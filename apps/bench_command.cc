@@ -85,13 +85,14 @@ nlohmann::json RowJson(const steppers::WorkPoint& w) {
 }
 
 void PrintRow(std::ostream& out, const steppers::WorkPoint& w) {
-  char line[256];
+  // The status goes after the fixed-width columns: it can be a long reason.
+  char line[160];
   std::snprintf(line, sizeof line,
-                "%-22s %9ld %9.1e %10.3e %10.3e %10.3e %10.3e %10ld %6.2f %s\n",
+                "%-22s %9ld %9.1e %10.3e %10.3e %10.3e %10.3e %10ld %6.2f ",
                 w.method.c_str(), w.steps, w.tolerance, w.error, w.energy_error,
                 w.invariant_error, w.seconds, w.evaluations,
-                w.iterations_per_step, w.status.c_str());
-  out << line;
+                w.iterations_per_step);
+  out << line << w.status << '\n';
 }
 
 int RunBench(const BenchOptions& o) {

@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> names;
   for (int i = 2; i < argc; ++i) names.push_back(argv[i]);
   if (names.empty())
-    names = {"anharmonic", "kepler", "nldnls", "pendulum", "henon_heiles"};
+    names = {"anharmonic", "damped", "kepler", "nldnls", "pendulum",
+             "henon_heiles"};
   std::printf(
       "# What accuracy costs in time: work–precision, median of 5 runs,"
       " sweeps stop after a run slower than %.2f s\n",

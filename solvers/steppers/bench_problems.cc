@@ -60,6 +60,9 @@ BenchProblem MakeBenchProblem(std::string name, std::string description,
   b.t_end = t_end;
   b.first_steps = first_steps;
   b.methods = WorkPrecisionMethods<Problem>();
+  std::erase_if(b.methods, [&](const std::string& m) {
+    return !ExternalMethodApplies(m, name);
+  });
   b.invariant_names = Problem::InvariantNames();
   // The reference is computed on first use and kept.
   auto cache = std::make_shared<std::vector<double>>();
@@ -91,6 +94,7 @@ std::vector<double> GaussReference(const Problem& problem, double t_end,
 
 const std::vector<BenchProblem>& BenchProblems() {
   static const std::vector<BenchProblem> problems = [] {
+    RegisterVariationalMethods();
     using detail::MakeBenchProblem;
     std::vector<BenchProblem> r;
     const double orbit = 2 * M_PI;
@@ -129,6 +133,7 @@ const std::vector<BenchProblem>& BenchProblems() {
         problems::Nldnls{}, 10.0, 50, "Gauss–Legendre s = 3, h = 0.001", [] {
           return detail::GaussReference(problems::Nldnls{}, 10.0, 10000);
         }));
+    r.push_back(DampedBenchProblem());
     return r;
   }();
   return problems;

@@ -2,7 +2,7 @@
 // time, initial state, reference at t_end and the step count to start the
 // sweeps from:
 //   harmonic, pendulum, anharmonic, kepler (e = 0.6), kepler_e09,
-//   henon_heiles, nldnls (32 sites, A = 0.5).
+//   henon_heiles, nldnls (32 sites, A = 0.5), damped (seed 000 eq. 43).
 // References are exact where a closed form exists (harmonic, pendulum,
 // anharmonic, Kepler); Hénon–Heiles and the NLDNLS use Gauss–Legendre s = 3
 // at a step 4–20× below the finest in the sweeps (stated in `reference`).
@@ -31,6 +31,16 @@ struct BenchProblem {
 // Compiled once (bench_problems.cc): the stepper templates for every problem
 // and method are instantiated there, not in each program that lists them.
 const std::vector<BenchProblem>& BenchProblems();
+
+// Registers the variational solver (time-slab marching with the default
+// window) as external methods variational_sbp21 … variational_sbp84 for the
+// bench problems that are in its registry with the same setup (anharmonic,
+// pendulum, kepler). Called by BenchProblems(); idempotent.
+void RegisterVariationalMethods();
+
+// The damped oscillator of seed 000 (not Hamiltonian): the variational
+// solver's four operators only. Part of BenchProblems().
+BenchProblem DampedBenchProblem();
 
 // Throws std::invalid_argument naming the valid problems.
 const BenchProblem& FindBenchProblem(const std::string& name);

@@ -40,8 +40,22 @@ inline std::map<std::string, ExternalMethod>& ExternalMethods() {
   static std::map<std::string, ExternalMethod> methods;
   return methods;
 }
-inline void RegisterExternalMethod(const std::string& name, ExternalMethod m) {
+// Which problems (by bench name) an external method can run; empty: all.
+using ExternalApplicability = std::function<bool(const std::string& problem)>;
+inline std::map<std::string, ExternalApplicability>& ExternalApplies() {
+  static std::map<std::string, ExternalApplicability> applies;
+  return applies;
+}
+inline void RegisterExternalMethod(const std::string& name, ExternalMethod m,
+                                   ExternalApplicability applies = {}) {
   ExternalMethods()[name] = std::move(m);
+  ExternalApplies()[name] = std::move(applies);
+}
+// True for every non-external method.
+inline bool ExternalMethodApplies(const std::string& method,
+                                  const std::string& problem) {
+  const auto it = ExternalApplies().find(method);
+  return it == ExternalApplies().end() || !it->second || it->second(problem);
 }
 
 inline const std::vector<std::string>& PeerNames() {

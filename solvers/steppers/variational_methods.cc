@@ -1,0 +1,149 @@
+// The variational solver as an external method of the work–precision harness
+// (bench_problems.h): the same problems, the same step counts, the same
+// measurements as the steppers.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "problems/damped_oscillator.h"
+#include "solvers/steppers/bench_problems.h"
+#include "solvers/variational/registry.h"
+
+namespace vivp::steppers {
+
+namespace {
+
+// Bench problems whose variational registry entry has the same Lagrangian,
+// parameters and initial data, with L = ½|ẋ|² − V: the momentum the harness
+// compares is the velocity.
+bool InRegistry(const std::string& problem) {
+  return problem == "anharmonic" || problem == "pendulum" || problem == "kepler";
+}
+
+ExternalRun RunVariational(const std::string& op, const std::string& problem,
+                           const std::vector<double>& y0, double t_end,
+                           long steps) {
+  ExternalRun run;
+  if (!InRegistry(problem)) {
+    run.status = "n/a (" + problem + " has no variational registry entry)";
+    return run;
+  }
+  const NamedProblem& p = FindProblem(problem);
+  const std::size_t d = p.initial.x.size();
+  for (std::size_t c = 0; c < d; ++c)
+    if (y0[c] != p.initial.x[c] || y0[d + c] != p.initial.v[c]) {
+      run.status = "n/a (initial state differs from the registry's)";
+      return run;
+    }
+  const Grid g{.op = op, .points = steps + 1, .t_start = 0.0, .t_end = t_end};
+  MarchOptions o;
+  const MarchResult m = p.march(g, o, {});
+  if (!m.status.converged) {
+    run.status = "not converged: " + m.status.reason;
+    return run;
+  }
+  run.states.reserve(m.t.size());
+  for (Eigen::Index i = 0; i < Eigen::Index(m.t.size()); ++i) {
+    std::vector<double> s(2 * d);
+    for (std::size_t c = 0; c < d; ++c) {
+      s[c] = m.x(i, c);
+      s[d + c] = m.v(i, c);
+    }
+    run.states.push_back(std::move(s));
+  }
+  // The last node carries the multiplier-corrected state, the one the march
+  // hands on (one order better than x_N, formulation §1.8).
+  for (std::size_t c = 0; c < d; ++c) {
+    run.states.back()[c] = m.end_position[c];
+    run.states.back()[d + c] = m.end_velocity[c];
+  }
+  // Residual evaluations: each Newton/chord step of a window costs one
+  // pointwise gradient per node, plus the first residual of each window.
+  run.evaluations = (m.corrections + m.window_count) * o.window_points;
+  run.iterations = m.corrections;
+  return run;
+}
+
+// The damped oscillator is not Hamiltonian: no stepper of the family
+// applies, so its row of the comparison is the variational solver alone,
+// measured like the steppers (error of (x, p = μẋ) at t_end, maximum energy
+// error against the exact decaying energy relative to E(0), median time).
+WorkPoint MeasureDamped(const std::string& method, double t_end, long steps,
+                        int repeats) {
+  const problems::DampedOscillator exact;
+  const std::string op = method.substr(std::string("variational_").size());
+  const NamedProblem& p = FindProblem("damped");
+  const Grid g{.op = op, .points = steps + 1, .t_start = 0.0, .t_end = t_end};
+  WorkPoint w;
+  w.method = method;
+  w.steps = steps;
+  w.h = t_end / double(steps);
+  MarchOptions o;
+  MarchResult m;
+  std::vector<double> t;
+  for (int r = 0; r < std::max(repeats, 1); ++r) {
+    const auto begin = std::chrono::steady_clock::now();
+    m = p.march(g, o, {});
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                              begin)
+                    .count());
+  }
+  std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+  w.seconds = t[t.size() / 2];
+  if (!m.status.converged) {
+    w.status = "not converged: " + m.status.reason;
+    return w;
+  }
+  const auto end = exact.Exact(t_end);
+  w.error = std::max(std::abs(m.end_position[0] - end.x),
+                     exact.mu * std::abs(m.end_velocity[0] - end.v));
+  const double e0 = exact.Energy(exact.x0, exact.v0);
+  double de = 0;
+  for (Eigen::Index i = 0; i < Eigen::Index(m.t.size()); ++i) {
+    const auto e = exact.Exact(m.t[i]);
+    de = std::max(de, std::abs(exact.Energy(m.x(i, 0), m.v(i, 0)) -
+                               exact.Energy(e.x, e.v)));
+  }
+  w.energy_error = de / e0;
+  w.evaluations = (m.corrections + m.window_count) * o.window_points;
+  w.iterations = m.corrections;
+  return w;
+}
+
+}  // namespace
+
+BenchProblem DampedBenchProblem() {
+  BenchProblem b;
+  b.name = "damped";
+  b.description =
+      "damped oscillator μẍ + ξẋ + κx = 0 (seed 000 eq. 43), t = 204.8";
+  b.reference = "exact";
+  b.t_end = 204.8;
+  b.first_steps = 256;
+  for (const char* op : {"sbp21", "sbp42", "sbp63", "sbp84"})
+    b.methods.push_back(std::string("variational_") + op);
+  b.measure = [t_end = b.t_end](const std::string& method, double knob,
+                                int repeats) {
+    return MeasureDamped(method, t_end, static_cast<long>(knob), repeats);
+  };
+  return b;
+}
+
+void RegisterVariationalMethods() {
+  static const bool registered = [] {
+    for (const std::string op : {"sbp21", "sbp42", "sbp63", "sbp84"})
+      RegisterExternalMethod(
+          "variational_" + op,
+          [op](const std::string& problem, const std::vector<double>& y0,
+               double t_end, long steps) {
+            return RunVariational(op, problem, y0, t_end, steps);
+          },
+          InRegistry);
+    return true;
+  }();
+  (void)registered;
+}
+
+}  // namespace vivp::steppers
