@@ -101,14 +101,21 @@ int RunConverge(const ConvergeOptions& o) {
           << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
     all_converged = all_converged && r.converged;
   }
-  human << std::fixed << std::setprecision(2) << "fitted order (dt = 1/Nt):     x "
-        << study.orders.x << ", Dx " << study.orders.v << ", x+M⁻¹λ4 "
-        << study.orders.x_corrected << ", −λ3 " << study.orders.p_corrected
-        << "\nfitted order (dt = 1/(Nt−1)): x " << study.orders_true_dt.x
-        << ", Dx " << study.orders_true_dt.v << ", x+M⁻¹λ4 "
-        << study.orders_true_dt.x_corrected << ", −λ3 "
-        << study.orders_true_dt.p_corrected << "\n"
-        << std::defaultfloat;
+  // An order is NaN when fewer than two errors lie above round-off (e.g.
+  // free fall with SBP42, exact on parabolas): say so instead of "nan".
+  auto order = [](double v) {
+    if (std::isnan(v)) return std::string("round-off");
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(2) << v;
+    return s.str();
+  };
+  auto orders = [&](const auto& f) {
+    return "x " + order(f.x) + ", Dx " + order(f.v) + ", x+M⁻¹λ4 " +
+           order(f.x_corrected) + ", −λ3 " + order(f.p_corrected);
+  };
+  human << "fitted order (dt = 1/Nt):     " << orders(study.orders)
+        << "\nfitted order (dt = 1/(Nt−1)): " << orders(study.orders_true_dt)
+        << "\n";
 
   if (!o.json.empty()) {
     nlohmann::json rows = nlohmann::json::array();

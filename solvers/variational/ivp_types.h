@@ -38,7 +38,8 @@ struct SolveOptions {
   solvers::NewtonOptions newton;
   // Reduced Newton in double: evaluate the refinement residual in long double
   // (mixed-precision iterative refinement). Removes the round-off that the
-  // Nt³ conditioning amplifies (free fall SBP42 exact to 1 ulp at Nt = 65536)
+  // Nt³ conditioning amplifies (free fall SBP42 exact to 1 ulp at Nt = 65536;
+  // since D is evaluated on differences plain double reaches that too)
   // for about twice the cost of a double residual.
   bool extended_residual = false;
   // Optional initial guess for the path, node-major (points x dof values);
