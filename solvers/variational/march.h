@@ -206,15 +206,9 @@ struct Marcher {
       auto o = e.Solve(initial, newton, want_nodes);
       if (o.failure.empty()) {
         Record(t0, t1, points, o.report, depth, o.end);
-        const int emit = last_of_march ? int(points) : int(points) - 1;
-        double x[d], v[d];
-        for (int i = 0; i < emit && want_nodes; ++i) {
-          for (int c = 0; c < d; ++c) {
-            x[c] = e.x(i, c);
-            v[c] = e.v(i, c);
-          }
-          Emit(x, v);
-        }
+        EmitNodes(last_of_march ? int(points) : int(points) - 1,
+                  [&](int i, int c) { return e.x(i, c); },
+                  [&](int i, int c) { return e.v(i, c); });
         HandOff(initial, o.end, &e, nullptr);
         return true;
       }
@@ -244,15 +238,9 @@ struct Marcher {
     solvers::NewtonReport r;
     r.iterations = s.iterations;
     Record(t0, t1, points, r, depth, s.corrected);
-    const int emit = last_of_march ? s.points() : s.points() - 1;
-    double x[d], v[d];
-    for (int i = 0; i < emit && want_nodes; ++i) {
-      for (int c = 0; c < d; ++c) {
-        x[c] = s.x1(i, c);
-        v[c] = s.velocity(i, c);
-      }
-      Emit(x, v);
-    }
+    EmitNodes(last_of_march ? s.points() : s.points() - 1,
+              [&](int i, int c) { return s.x1(i, c); },
+              [&](int i, int c) { return s.velocity(i, c); });
     HandOff(initial, s.corrected, nullptr, &s);
     return true;
   }
@@ -301,6 +289,21 @@ struct Marcher {
         initial.x[c] = s->x1(n, c);
         if (order == 2) initial.v[c] = s->velocity(n, c);
       }
+    }
+  }
+
+  // Emits the first `count` nodes of a solved window (position and velocity
+  // of DOF c at node i through the accessors), unless nobody wants them.
+  template <class X, class V>
+  void EmitNodes(int count, const X& x_of, const V& v_of) {
+    if (!observer && !options.keep_trajectory) return;
+    double x[d], v[d];
+    for (int i = 0; i < count; ++i) {
+      for (int c = 0; c < d; ++c) {
+        x[c] = x_of(i, c);
+        v[c] = v_of(i, c);
+      }
+      Emit(x, v);
     }
   }
 
