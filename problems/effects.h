@@ -1,0 +1,163 @@
+// Effects: the terms a physical system is composed of (issue 5). A scene
+// lists effects; the Lagrangian is their sum and the non-conservative term Λ
+// the sum of the dissipative ones, so an effect that is not listed costs
+// nothing. Each effect is a small struct with defaults for every parameter
+// and either
+//   template <int D, class T> T Lagrangian(const T* x, const T* v) const
+// (a term of L, D degrees of freedom) or
+//   template <int D, class T> T Lambda(const T* x1, const T* v1,
+//                                      const T* x2, const T* v2) const
+// (a term of Galley's Λ in the doubled variables), or both.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "core/autodiff/scalar.h"
+
+namespace vivp::problems::effects {
+
+namespace detail {
+template <int D, class T>
+T Dot(const T* a, const T* b) {
+  T s = a[0] * b[0];
+  for (int c = 1; c < D; ++c) s += a[c] * b[c];
+  return s;
+}
+// (v1 + v2)·(x1 − x2) = 2 ẋ₊·x₋, the building block of linear Λ terms.
+template <int D, class T>
+T PlusDotMinus(const T* x1, const T* v1, const T* x2, const T* v2) {
+  T s = (v1[0] + v2[0]) * (x1[0] - x2[0]);
+  for (int c = 1; c < D; ++c) s += (v1[c] + v2[c]) * (x1[c] - x2[c]);
+  return s;
+}
+}  // namespace detail
+
+// Kinetic energy ½ m|ẋ|², or ½ ẋᵀMẋ with a symmetric mass matrix M
+// (row-major D×D in `matrix`, used when non-empty).
+struct Kinetic {
+  double mass = 1.0;
+  std::vector<double> matrix;
+  template <int D, class T>
+  T Lagrangian(const T*, const T* v) const {
+    if (matrix.empty()) return T(0.5 * mass) * detail::Dot<D>(v, v);
+    T s = T(0.0);
+    for (int r = 0; r < D; ++r)
+      for (int c = 0; c < D; ++c) s += T(0.5 * matrix[r * D + c]) * v[r] * v[c];
+    return s;
+  }
+};
+
+// Uniform gravity: V = m g x_axis, so L gets −m g x_axis (axis 0-based,
+// default the last coordinate: "up").
+struct Gravity {
+  double mass = 1.0;
+  double g = 1.0;
+  int axis = -1;  // −1: the last coordinate
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    return T(-mass * g) * x[axis < 0 ? D - 1 : axis];
+  }
+};
+
+// Linear spring to a centre: V = ½k|x − c|².
+struct Spring {
+  double k = 1.0;
+  std::vector<double> centre;  // empty: the origin
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    if (centre.empty()) return T(-0.5 * k) * detail::Dot<D>(x, x);
+    T dx[D];
+    for (int c = 0; c < D; ++c) dx[c] = x[c] - T(centre[c]);
+    return T(-0.5 * k) * detail::Dot<D>(dx, dx);
+  }
+};
+
+// Quartic (anharmonic) potential V = ¼κ|x|⁴ (seed 000 eq. 33 for D = 1).
+struct Quartic {
+  double kappa = 1.0;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    const T r2 = detail::Dot<D>(x, x);
+    return T(-0.25 * kappa) * r2 * r2;
+  }
+};
+
+// Pendulum in angle form: V = −s cos x₀ (s = m g ℓ, with m ℓ² = 1 in the
+// kinetic term for the usual ẍ = −s sin x).
+struct Pendulum {
+  double strength = 1.0;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    using std::cos;
+    return T(strength) * cos(x[0]);
+  }
+};
+
+// Central attraction V = −k/|x| (Kepler).
+struct Central {
+  double k = 1.0;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    using std::sqrt;
+    return T(k) / sqrt(detail::Dot<D>(x, x));
+  }
+};
+
+// Gaussian well U = a·exp(−|x|²/2) (seed 003's experiment with a = 1).
+struct GaussianWell {
+  double amplitude = 1.0;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    using std::exp;
+    return T(-amplitude) * exp(T(-0.5) * detail::Dot<D>(x, x));
+  }
+};
+
+// Nearest-neighbour chain (FPU type): V = Σ ½k(Δ)² + ¼β(Δ)⁴ over the bonds
+// Δ = x_{i+1} − x_i, with x_{−1} = x_D = 0 when the ends are fixed.
+struct Chain {
+  double k = 1.0;
+  double beta = 0.0;
+  bool fixed_ends = true;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    T s = T(0.0);
+    auto bond = [&](const T& d) {
+      const T d2 = d * d;
+      s += T(0.5 * k) * d2;
+      if (beta != 0.0) s += T(0.25 * beta) * d2 * d2;
+    };
+    for (int i = 0; i + 1 < D; ++i) bond(T(x[i + 1] - x[i]));
+    if (fixed_ends) {
+      bond(x[0]);
+      bond(x[D - 1]);
+    }
+    return -s;
+  }
+};
+
+// Linear damping F = −ξẋ through Galley's Λ = −ξ ẋ₊·x₋ (seed 000 eq. 40).
+struct Damping {
+  double xi = 0.0;
+  template <int D, class T>
+  T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
+    return T(-0.5 * xi) * detail::PlusDotMinus<D>(x1, v1, x2, v2);
+  }
+};
+
+// First-order growth ẋ = κx (seed 000 eqs. 37–38): L = −½κ|x|² with
+// Λ = ẋ₊·x₋, which together give the first-order equation.
+struct Growth {
+  double kappa = 1.0;
+  template <int D, class T>
+  T Lagrangian(const T* x, const T*) const {
+    return T(-0.5 * kappa) * detail::Dot<D>(x, x);
+  }
+  template <int D, class T>
+  T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
+    return T(0.5) * detail::PlusDotMinus<D>(x1, v1, x2, v2);
+  }
+};
+
+}  // namespace vivp::problems::effects

@@ -1,0 +1,106 @@
+// Effects composed at run time (problems/composed.h) against the hand-written
+// problems of seed 000 and the comparison set: the same L and Λ values at
+// scattered points, and the same trajectory from the solver.
+#define BOOST_TEST_MODULE composed_effects
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "problems/anharmonic.h"
+#include "problems/composed.h"
+#include "problems/damped_oscillator.h"
+#include "problems/exponential.h"
+#include "problems/free_fall.h"
+#include "problems/kepler.h"
+#include "problems/pendulum.h"
+#include "solvers/variational/solve_ivp.h"
+
+using namespace vivp;
+using namespace vivp::problems;
+
+namespace {
+
+// max |L_a − L_b| and |Λ_a − Λ_b| over 200 random doubled states.
+template <int D, class A, class B>
+double MaxDifference(const A& a, const B& b) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.2, 1.5);
+  double worst = 0;
+  for (int k = 0; k < 200; ++k) {
+    double x1[D], v1[D], x2[D], v2[D];
+    for (int c = 0; c < D; ++c) {
+      x1[c] = u(rng);
+      v1[c] = u(rng) - 0.7;
+      x2[c] = u(rng);
+      v2[c] = u(rng) - 0.7;
+    }
+    worst = std::max(worst, std::abs(a(x1, v1) - b(x1, v1)));
+    if constexpr (action::HasLambda<A> || action::HasLambda<B>) {
+      double la = 0, lb = 0;
+      if constexpr (action::HasLambda<A>) la = a.Lambda(x1, v1, x2, v2);
+      if constexpr (action::HasLambda<B>) lb = b.Lambda(x1, v1, x2, v2);
+      worst = std::max(worst, std::abs(la - lb));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(EffectSums_EqualTheHandWrittenLagrangians) {
+  using namespace effects;
+  BOOST_TEST(MaxDifference<1>(
+                 DampedOscillator{},
+                 MakeComposed<1, true>({Kinetic{0.5, {}}, Spring{1.0, {}},
+                                        Damping{0.00071}})) <= 1e-15);
+  BOOST_TEST(MaxDifference<1>(Anharmonic{}, MakeComposed<1, false>(
+                                                {Kinetic{}, Quartic{20.0}})) <=
+             1e-13);
+  BOOST_TEST(MaxDifference<1>(FreeFall{}, MakeComposed<1, false>(
+                                              {Kinetic{}, Gravity{}})) <= 1e-15);
+  BOOST_TEST(MaxDifference<1>(Exponential{},
+                              MakeComposed<1, true>({Growth{2.5}})) <= 1e-15);
+  BOOST_TEST(MaxDifference<1>(problems::Pendulum{}, MakeComposed<1, false>(
+                                              {Kinetic{}, effects::Pendulum{}})) <=
+             1e-15);
+  BOOST_TEST(MaxDifference<2>(Kepler{}, MakeComposed<2, false>(
+                                            {Kinetic{}, Central{}})) <= 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(ChainWithFixedEnds_IsTheSumOfItsBonds) {
+  // Three masses between walls: bonds x0, x1 − x0, x2 − x1, x2.
+  const auto c = MakeComposed<3, false>({effects::Chain{2.0, 0.5, true}});
+  const double x[3] = {0.1, -0.3, 0.2}, v[3] = {0, 0, 0};
+  double expected = 0;
+  for (double d : {0.1, -0.4, 0.5, 0.2})
+    expected -= 0.5 * 2.0 * d * d + 0.25 * 0.5 * d * d * d * d;
+  BOOST_TEST(std::abs(c(x, v) - expected) <= 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(ComposedDampedOscillator_SolvesLikeTheHandWrittenOne) {
+  const auto composed = MakeComposed<1, true>(
+      {effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
+       effects::Damping{0.00071}});
+  const Grid g{.op = "sbp42", .points = 2048, .t_start = 0.0, .t_end = 204.8};
+  const auto a = SolveIvp(DampedOscillator{}, {{1.0}, {0.0}}, g);
+  const auto b = SolveIvp(composed, {{1.0}, {0.0}}, g);
+  BOOST_TEST(a.status.converged);
+  BOOST_TEST(b.status.converged);
+  BOOST_TEST((a.x1 - b.x1).cwiseAbs().maxCoeff() <= 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(LambdaFlagMustMatchTheEffects) {
+  BOOST_CHECK_EXCEPTION(
+      (MakeComposed<1, false>({effects::Kinetic{}, effects::Damping{0.1}})),
+      std::invalid_argument, [](const auto& e) {
+        return std::string(e.what()).find("has a dissipative effect") !=
+               std::string::npos;
+      });
+  BOOST_CHECK_EXCEPTION(
+      (MakeComposed<1, true>({effects::Kinetic{}, effects::Spring{}})),
+      std::invalid_argument, [](const auto& e) {
+        return std::string(e.what()).find("has no dissipative effect") !=
+               std::string::npos;
+      });
+}
