@@ -39,6 +39,7 @@ ExternalRun RunVariational(const std::string& op, const std::string& problem,
     }
   const Grid g{.op = op, .points = steps + 1, .t_start = 0.0, .t_end = t_end};
   MarchOptions o;
+  o.stabilize = false;  // a step count means that step: no hidden refinement
   const MarchResult m = p.march(g, o, {});
   if (!m.status.converged) {
     run.status = "not converged: " + m.status.reason;
@@ -81,6 +82,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, long steps,
   w.steps = steps;
   w.h = t_end / double(steps);
   MarchOptions o;
+  o.stabilize = false;  // a step count means that step: no hidden refinement
   MarchResult m;
   std::vector<double> t;
   for (int r = 0; r < std::max(repeats, 1); ++r) {

@@ -24,6 +24,12 @@ struct MarchOptions {
   int max_split_depth = 4;   // fallback: halve a failing window up to 4 times
   bool keep_trajectory = true;  // also keeps the per-window reports
   SolveOptions solve;        // per-window solver settings
+  // Hard cases stay stable: when Δt·ω exceeds the operator's stability limit
+  // (resolution.h), solve each window on a grid refined r times (output still
+  // on the requested grid) instead of failing; r is reported. Off: such a
+  // march stops with the under-resolution reason.
+  bool stabilize = true;
+  int max_refinement = 64;
 };
 
 struct WindowReport {
@@ -45,6 +51,7 @@ struct MarchResult {
   std::vector<WindowReport> windows;  // one per window, if keep_trajectory
   long long window_count = 0;
   int fallbacks = 0;
+  int refinement = 1;   // solve grid = requested grid refined this many times
   int iterations = 0;   // Jacobian factorizations over all windows
   int corrections = 0;  // solves with a factorization over all windows
   double error_estimate = 0;  // Σ of the per-window position estimates

@@ -79,6 +79,9 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
   MarchOptions mo;
   mo.window_points = slab_points;
   mo.solve = options;
+  // A convergence study measures the grids it names: an under-resolved one
+  // is reported, not silently refined.
+  mo.stabilize = false;
   const MarchResult m = problem.march(grid, mo, {});
   ConvergenceRow r;
   r.points = grid.points;
