@@ -23,6 +23,8 @@ Runner AddSpectrumCommand(CLI::App& app);
 Runner AddConvergeCommand(CLI::App& app);
 Runner AddBeaCommand(CLI::App& app);
 Runner AddBenchCommand(CLI::App& app);
+Runner AddRunCommand(CLI::App& app);
+Runner AddSceneCommand(CLI::App& app);
 
 // Refuses to write into an existing non-empty directory unless force is set,
 // so nothing a user keeps there is overwritten without being asked.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/scene/scene.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
       {"converge", vivp::app::AddConvergeCommand(app)},
       {"bea", vivp::app::AddBeaCommand(app)},
       {"bench", vivp::app::AddBenchCommand(app)},
+      {"run", vivp::app::AddRunCommand(app)},
+      {"scene", vivp::app::AddSceneCommand(app)},
   };
 
   try {
@@ -37,6 +40,10 @@ int main(int argc, char** argv) {
   try {
     for (const auto& [name, run] : commands)
       if (app.got_subcommand(name)) return run();
+  } catch (const vivp::scene::SceneError& e) {
+    // Already FILE:LINE:COL: what is wrong; what is expected.
+    std::cerr << e.what() << "\n";
+    return 2;
   } catch (const vivp::app::UsageError& e) {
     std::cerr << "vivp: error: " << e.what() << "\n";
     return 2;

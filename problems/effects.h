@@ -7,12 +7,16 @@
 // (a term of L, D degrees of freedom) or
 //   template <int D, class T> T Lambda(const T* x1, const T* v1,
 //                                      const T* x2, const T* v2) const
-// (a term of Galley's Λ in the doubled variables), or both.
+// (a term of Galley's Λ in the doubled variables), or both. A Lagrangian term
+// declares what it depends on (kDepends: the position, the velocity or
+// both); the solver differentiates it in those variables only, and calls it
+// with a null pointer for the other argument.
 #pragma once
 
 #include <cmath>
 #include <vector>
 
+#include "core/action/density.h"
 #include "core/autodiff/scalar.h"
 
 namespace vivp::problems::effects {
@@ -36,6 +40,7 @@ T PlusDotMinus(const T* x1, const T* v1, const T* x2, const T* v2) {
 // Kinetic energy ½ m|ẋ|², or ½ ẋᵀMẋ with a symmetric mass matrix M
 // (row-major D×D in `matrix`, used when non-empty).
 struct Kinetic {
+  static constexpr action::Depends kDepends = action::Depends::kVelocity;
   double mass = 1.0;
   std::vector<double> matrix;
   template <int D, class T>
@@ -51,6 +56,7 @@ struct Kinetic {
 // Uniform gravity: V = m g x_axis, so L gets −m g x_axis (axis 0-based,
 // default the last coordinate: "up").
 struct Gravity {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double mass = 1.0;
   double g = 1.0;
   int axis = -1;  // −1: the last coordinate
@@ -62,6 +68,7 @@ struct Gravity {
 
 // Linear spring to a centre: V = ½k|x − c|².
 struct Spring {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double k = 1.0;
   std::vector<double> centre;  // empty: the origin
   template <int D, class T>
@@ -71,52 +78,84 @@ struct Spring {
     for (int c = 0; c < D; ++c) dx[c] = x[c] - T(centre[c]);
     return T(-0.5 * k) * detail::Dot<D>(dx, dx);
   }
+  // The same as a function of r² = |x|² (only without a centre).
+  bool radial() const {
+    for (double c : centre)
+      if (c != 0) return false;
+    return true;
+  }
+  template <class T>
+  T RadialLagrangian(const T& r2) const {
+    return T(-0.5 * k) * r2;
+  }
 };
 
 // Quartic (anharmonic) potential V = ¼κ|x|⁴ (seed 000 eq. 33 for D = 1).
 struct Quartic {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
-    const T r2 = detail::Dot<D>(x, x);
+    return RadialLagrangian(detail::Dot<D>(x, x));
+  }
+  bool radial() const { return true; }
+  template <class T>
+  T RadialLagrangian(const T& r2) const {
     return T(-0.25 * kappa) * r2 * r2;
   }
 };
 
-// Pendulum in angle form: V = −s cos x₀ (s = m g ℓ, with m ℓ² = 1 in the
-// kinetic term for the usual ẍ = −s sin x).
+// Pendulum in angle form: V = −s cos x_axis (s = m g ℓ, with m ℓ² = 1 in
+// the kinetic term for the usual ẍ = −s sin x).
 struct Pendulum {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double strength = 1.0;
+  int axis = 0;
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     using std::cos;
-    return T(strength) * cos(x[0]);
+    return T(strength) * cos(x[axis]);
   }
 };
 
 // Central attraction V = −k/|x| (Kepler).
 struct Central {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double k = 1.0;
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
+    return RadialLagrangian(detail::Dot<D>(x, x));
+  }
+  bool radial() const { return true; }
+  template <class T>
+  T RadialLagrangian(const T& r2) const {
     using std::sqrt;
-    return T(k) / sqrt(detail::Dot<D>(x, x));
+    return T(k) / sqrt(r2);
   }
 };
 
-// Gaussian well U = a·exp(−|x|²/2) (seed 003's experiment with a = 1).
+// Gaussian well (seed 003's experiment with a = 1): L gets +U with
+// U = a·exp(−|x|²/2) (seed 003 writes ẍ = ∇U, L = ½|ẋ|² + U), i.e. the
+// potential energy −U, attractive for a > 0.
 struct GaussianWell {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double amplitude = 1.0;
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
+    return RadialLagrangian(detail::Dot<D>(x, x));
+  }
+  bool radial() const { return true; }
+  template <class T>
+  T RadialLagrangian(const T& r2) const {
     using std::exp;
-    return T(-amplitude) * exp(T(-0.5) * detail::Dot<D>(x, x));
+    return T(amplitude) * exp(T(-0.5) * r2);
   }
 };
 
 // Nearest-neighbour chain (FPU type): V = Σ ½k(Δ)² + ¼β(Δ)⁴ over the bonds
 // Δ = x_{i+1} − x_i, with x_{−1} = x_D = 0 when the ends are fixed.
 struct Chain {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double k = 1.0;
   double beta = 0.0;
   bool fixed_ends = true;
@@ -139,7 +178,7 @@ struct Chain {
 
 // Linear damping F = −ξẋ through Galley's Λ = −ξ ẋ₊·x₋ (seed 000 eq. 40).
 struct Damping {
-  double xi = 0.0;
+  double xi = 0.1;
   template <int D, class T>
   T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
     return T(-0.5 * xi) * detail::PlusDotMinus<D>(x1, v1, x2, v2);
@@ -149,6 +188,7 @@ struct Damping {
 // First-order growth ẋ = κx (seed 000 eqs. 37–38): L = −½κ|x|² with
 // Λ = ẋ₊·x₋, which together give the first-order equation.
 struct Growth {
+  static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/cli_run.h"
+
 namespace {
 
 struct Run {
@@ -18,24 +20,8 @@ struct Run {
 };
 
 Run Vivp(const std::string& args) {
-  const std::string err_file =
-      "/tmp/vivp_bea_cli_test_" + std::to_string(::getpid()) + ".err";
-  const std::string cmd = std::string(VIVP_EXE) + " " + args + " 2>" + err_file;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  BOOST_REQUIRE(pipe != nullptr);
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe))
-    out.append(buf.data(), n);
-  const int raw = pclose(pipe);
-  std::string err;
-  if (FILE* f = fopen(err_file.c_str(), "r")) {
-    while (std::size_t n = fread(buf.data(), 1, buf.size(), f))
-      err.append(buf.data(), n);
-    fclose(f);
-  }
-  std::remove(err_file.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out, err};
+  const auto r = vivp::testing::RunVivp(args);
+  return {r.status, r.out, r.err};
 }
 
 bool Contains(const std::string& s, const std::string& part) {

@@ -1,15 +1,17 @@
 // `vivp spectrum` end to end: bad input exits with status 2 and one line that
 // names the problem and the valid values; good input writes what it promises.
 #define BOOST_TEST_MODULE cli_spectrum
-#include <boost/test/unit_test.hpp>
+#include <sys/wait.h>
 
 #include <array>
+#include <boost/test/unit_test.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
+
+#include "tests/cli_run.h"
 
 namespace fs = std::filesystem;
 
@@ -21,25 +23,15 @@ struct Run {
 };
 
 Run Vivp(const std::string& args) {
-  const std::string cmd = std::string(VIVP_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  BOOST_REQUIRE(pipe != nullptr);
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int raw = pclose(pipe);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  const auto r = vivp::testing::RunVivp(args);
+  return {r.status, r.out + r.err};
 }
 
-int Lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
+using vivp::testing::Lines;
 
 fs::path TempDir(const std::string& name) {
-  fs::path p = fs::temp_directory_path() / ("vivp_cli_test_" + name + "_" +
-                                            std::to_string(::getpid()));
+  fs::path p = fs::temp_directory_path() /
+               ("vivp_cli_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   return p;
 }
@@ -87,7 +79,8 @@ BOOST_AUTO_TEST_CASE(Json_HasTheDocumentedKeys) {
   const fs::path dir = TempDir("json");
   fs::create_directories(dir);
   const fs::path file = dir / "s.json";
-  const Run r = Vivp("spectrum --operator sbp21 --points 32 --json " + file.string());
+  const Run r =
+      Vivp("spectrum --operator sbp21 --points 32 --json " + file.string());
   BOOST_TEST(r.status == 0, r.output);
   std::ifstream in(file);
   const auto j = nlohmann::json::parse(in);
@@ -109,13 +102,15 @@ BOOST_AUTO_TEST_CASE(Json_HasTheDocumentedKeys) {
   BOOST_TEST(again.status == 2);
   BOOST_TEST(again.output.find("exists; choose another name or pass --force") !=
              std::string::npos);
-  BOOST_TEST(Vivp("spectrum --points 32 --force --json " + file.string()).status == 0);
+  BOOST_TEST(
+      Vivp("spectrum --points 32 --force --json " + file.string()).status == 0);
   fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(Plot_WritesPngDataAndScript_AndRefusesNonEmptyDir) {
   const fs::path dir = TempDir("plot");
-  const Run r = Vivp("spectrum --operator sbp42 --points 16 --plot " + dir.string());
+  const Run r =
+      Vivp("spectrum --operator sbp42 --points 16 --plot " + dir.string());
   BOOST_TEST(r.status == 0, r.output);
   for (const char* f : {"fig03_null_vectors.png", "fig03_null_vectors.gp",
                         "fig03_null_vectors_left.dat", "fig04_spectrum.png",
@@ -124,7 +119,8 @@ BOOST_AUTO_TEST_CASE(Plot_WritesPngDataAndScript_AndRefusesNonEmptyDir) {
     BOOST_TEST(fs::exists(dir / f), f);
     if (fs::exists(dir / f)) BOOST_TEST(fs::file_size(dir / f) > 0u, f);
   }
-  const Run again = Vivp("spectrum --operator sbp42 --points 16 --plot " + dir.string());
+  const Run again =
+      Vivp("spectrum --operator sbp42 --points 16 --plot " + dir.string());
   BOOST_TEST(again.status == 2);
   BOOST_TEST(again.output.find("is not empty") != std::string::npos);
   fs::remove_all(dir);

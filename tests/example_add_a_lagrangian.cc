@@ -1,22 +1,13 @@
-// README "Add a Lagrangian": the example between the markers is shown there
-// verbatim; the test below checks its trajectory against the exact circle.
-// --- example ---
+// README "Add a Lagrangian": the struct of problems/cyclotron.h and the solve
+// below are shown there verbatim; the test checks the trajectory against the
+// exact circle.
+#include "problems/cyclotron.h"
 #include "solvers/variational/solve_ivp.h"
 
-// A charge in a uniform magnetic field B ẑ (symmetric gauge):
-//   L = ½|ẋ|² + ½B (x ẏ − y ẋ),   so   ẍ = B ẏ,  ÿ = −B ẋ.
-struct Cyclotron {
-  static constexpr int kDim = 2;
-  double B = 2.0;
-  template <class T>
-  T operator()(const T* x, const T* v) const {
-    return T(0.5) * (v[0] * v[0] + v[1] * v[1]) +
-           T(0.5 * B) * (x[0] * v[1] - x[1] * v[0]);
-  }
-};
-
+// --- example ---
 vivp::IvpSolution<double> Gyrate() {
-  return vivp::SolveIvp(Cyclotron{}, {.x = {1.0, 0.0}, .v = {0.0, -2.0}},
+  return vivp::SolveIvp(vivp::problems::Cyclotron{},
+                        {.x = {1.0, 0.0}, .v = {0.0, -2.0}},
                         {.op = "sbp42", .points = 400, .t_end = 3.0});
 }
 // --- end of example ---

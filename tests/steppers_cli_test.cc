@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/cli_run.h"
+
 namespace {
 
 struct Run {
@@ -20,23 +22,11 @@ struct Run {
 };
 
 Run Vivp(const std::string& args, bool with_stderr = true) {
-  const std::string cmd = std::string(VIVP_EXE) + " " + args +
-                          (with_stderr ? " 2>&1" : " 2>/dev/null");
-  FILE* pipe = popen(cmd.c_str(), "r");
-  BOOST_REQUIRE(pipe != nullptr);
-  std::string out;
-  std::array<char, 4096> buf;
-  while (std::size_t n = fread(buf.data(), 1, buf.size(), pipe))
-    out.append(buf.data(), n);
-  const int raw = pclose(pipe);
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+  const auto r = vivp::testing::RunVivp(args);
+  return {r.status, with_stderr ? r.out + r.err : r.out};
 }
 
-int Lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
+using vivp::testing::Lines;
 
 }  // namespace
 

@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 #include <concepts>
+#include <type_traits>
 
 #include "core/autodiff/pointwise.h"
 
@@ -73,11 +74,10 @@ T DensityPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
   return Density(problem, x1, v1, x2, v2);
 }
 
-// Λ alone in average/difference variables (zero when the problem has none).
-template <class P, class T>
-T LambdaPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
-                  const T* vm) {
-  constexpr int d = P::kDim;
+// A term λ(x1, v1, x2, v2) of Λ in average/difference variables.
+template <int d, class F, class T>
+T LambdaTermPlusMinus(const F& lambda, const T* xp, const T* vp, const T* xm,
+                      const T* vm) {
   T x1[d], v1[d], x2[d], v2[d];
   for (int c = 0; c < d; ++c) {
     x1[c] = xp[c] + T(0.5) * xm[c];
@@ -85,49 +85,133 @@ T LambdaPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
     v1[c] = vp[c] + T(0.5) * vm[c];
     v2[c] = vp[c] - T(0.5) * vm[c];
   }
-  return problem.Lambda(x1, v1, x2, v2);
+  return lambda(x1, v1, x2, v2);
 }
 
-// ∂f/∂m and ∂²f/∂m∂p of the ± density at m = 0, p = (x₊, v₊). Because
-// L(p + m/2) − L(p − m/2) is odd in m, its part is exactly ∇L(p) and ∇²L(p):
-// one evaluation of L with second-order AD instead of two. Λ, if present,
-// adds its own mixed derivatives.
-template <class Real, class P>
-ad::MixedDerivatives<Real, 2 * P::kDim, 2 * P::kDim> DiagonalDerivatives(
-    const P& problem, const Real* p) {
-  constexpr int d = P::kDim;
-  const auto h = ad::Hessian<Real, 2 * d>(
-      [&](const auto* z) { return problem(z, z + d); }, p);
-  ad::MixedDerivatives<Real, 2 * d, 2 * d> out{h.gradient, h.hessian};
-  if constexpr (HasLambda<P>) {
-    Real m[2 * d] = {};
-    const auto lam = ad::Mixed<Real, 2 * d, 2 * d>(
-        [&](const auto* pv, const auto* mv) {
-          return LambdaPlusMinus(problem, pv, pv + d, mv, mv + d);
+// What a term of L depends on: a potential sees only x, a kinetic energy only
+// v. A problem summed from terms (problems/composed.h) differentiates each
+// term in the d variables it depends on instead of all 2d.
+enum class Depends { kPosition, kVelocity, kBoth };
+
+// ∂f/∂m and ∂²f/∂m∂p of the ± density f at m = 0, p = (x₊, v₊), m = (x₋, v₋).
+template <class Real, int d>
+using Diagonal = ad::MixedDerivatives<Real, 2 * d, 2 * d>;
+template <class Real, int d>
+using DiagonalVector = Eigen::Matrix<Real, 2 * d, 1>;
+
+// Adds one term ℓ(x, v) of L. Because ℓ(p + m/2) − ℓ(p − m/2) is odd in m,
+// its part of ∂f/∂m and ∂²f/∂m∂p is exactly ∇ℓ(p) and ∇²ℓ(p): one
+// evaluation with second-order AD. A term declared kPosition (kVelocity) is
+// called with a null velocity (position) pointer, which it must not read.
+template <Depends kDep, int d, class Real, class F>
+void AddLagrangianTerm(const F& term, const Real* p, Diagonal<Real, d>& out) {
+  if constexpr (kDep == Depends::kBoth) {
+    const auto h = ad::Hessian<Real, 2 * d>(
+        [&](const auto* z) { return term(z, z + d); }, p);
+    out.dm += h.gradient;
+    out.dmp += h.hessian;
+  } else {
+    constexpr int off = kDep == Depends::kPosition ? 0 : d;
+    const auto h = ad::Hessian<Real, d>(
+        [&](const auto* z) {
+          using T = std::remove_cvref_t<decltype(*z)>;
+          const T* none = nullptr;
+          return kDep == Depends::kPosition ? term(z, none) : term(none, z);
         },
-        p, m);
-    out.dm += lam.dm;
-    out.dmp += lam.dmp;
+        p + off);
+    out.dm.template segment<d>(off) += h.gradient;
+    out.dmp.template block<d, d>(off, off) += h.hessian;
+  }
+}
+
+// The same for the residual alone (first derivatives).
+template <Depends kDep, int d, class Real, class F>
+void AddLagrangianTermGradient(const F& term, const Real* p,
+                               DiagonalVector<Real, d>& out) {
+  if constexpr (kDep == Depends::kBoth) {
+    out += ad::Gradient<Real, 2 * d>(
+               [&](const auto* z) { return term(z, z + d); }, p)
+               .second;
+  } else {
+    constexpr int off = kDep == Depends::kPosition ? 0 : d;
+    out.template segment<d>(off) +=
+        ad::Gradient<Real, d>(
+            [&](const auto* z) {
+              using T = std::remove_cvref_t<decltype(*z)>;
+              const T* none = nullptr;
+              return kDep == Depends::kPosition ? term(z, none) : term(none, z);
+            },
+            p + off)
+            .second;
+  }
+}
+
+// Adds one term λ(x1, v1, x2, v2) of Λ: its mixed derivatives at m = 0.
+template <int d, class Real, class F>
+void AddLambdaTerm(const F& lambda, const Real* p, Diagonal<Real, d>& out) {
+  const Real m[2 * d] = {};
+  const auto lam = ad::Mixed<Real, 2 * d, 2 * d>(
+      [&](const auto* pv, const auto* mv) {
+        return LambdaTermPlusMinus<d>(lambda, pv, pv + d, mv, mv + d);
+      },
+      p, m);
+  out.dm += lam.dm;
+  out.dmp += lam.dmp;
+}
+
+template <int d, class Real, class F>
+void AddLambdaTermGradient(const F& lambda, const Real* p,
+                           DiagonalVector<Real, d>& out) {
+  const Real m[2 * d] = {};
+  out += ad::MinusGradient<Real, 2 * d, 2 * d>(
+      [&](const auto* pv, const auto* mv) {
+        return LambdaTermPlusMinus<d>(lambda, pv, pv + d, mv, mv + d);
+      },
+      p, m);
+}
+
+// A problem may differentiate itself term by term (problems/composed.h) by
+// providing AddDiagonalDerivatives(p, out) and AddDiagonalGradient(p, out);
+// otherwise L and Λ are each differentiated whole.
+template <class P, class Real>
+concept DifferentiatesByTerms =
+    requires(const P& problem, const Real* p, Diagonal<Real, P::kDim>& dd,
+             DiagonalVector<Real, P::kDim>& g) {
+      problem.AddDiagonalDerivatives(p, dd);
+      problem.AddDiagonalGradient(p, g);
+    };
+
+// ∂f/∂m and ∂²f/∂m∂p of the ± density at m = 0, p = (x₊, v₊): ∇L(p) and
+// ∇²L(p) (see AddLagrangianTerm) plus Λ's own mixed derivatives.
+template <class Real, class P>
+Diagonal<Real, P::kDim> DiagonalDerivatives(const P& problem, const Real* p) {
+  constexpr int d = P::kDim;
+  Diagonal<Real, d> out{DiagonalVector<Real, d>::Zero(),
+                        Eigen::Matrix<Real, 2 * d, 2 * d>::Zero()};
+  if constexpr (DifferentiatesByTerms<P, Real>) {
+    problem.AddDiagonalDerivatives(p, out);
+  } else {
+    AddLagrangianTerm<Depends::kBoth, d>(problem, p, out);
+    if constexpr (HasLambda<P>)
+      AddLambdaTerm<d>([&](const auto*... a) { return problem.Lambda(a...); },
+                       p, out);
   }
   return out;
 }
 
 // ∂f/∂m of the ± density at m = 0 (the residual's pointwise part).
 template <class Real, class P>
-Eigen::Matrix<Real, 2 * P::kDim, 1> DiagonalGradient(const P& problem,
-                                                     const Real* p) {
+DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
+                                               const Real* p) {
   constexpr int d = P::kDim;
-  Eigen::Matrix<Real, 2 * d, 1> g =
-      ad::Gradient<Real, 2 * d>(
-          [&](const auto* z) { return problem(z, z + d); }, p)
-          .second;
-  if constexpr (HasLambda<P>) {
-    Real m[2 * d] = {};
-    g += ad::MinusGradient<Real, 2 * d, 2 * d>(
-        [&](const auto* pv, const auto* mv) {
-          return LambdaPlusMinus(problem, pv, pv + d, mv, mv + d);
-        },
-        p, m);
+  DiagonalVector<Real, d> g = DiagonalVector<Real, d>::Zero();
+  if constexpr (DifferentiatesByTerms<P, Real>) {
+    problem.AddDiagonalGradient(p, g);
+  } else {
+    AddLagrangianTermGradient<Depends::kBoth, d>(problem, p, g);
+    if constexpr (HasLambda<P>)
+      AddLambdaTermGradient<d>(
+          [&](const auto*... a) { return problem.Lambda(a...); }, p, g);
   }
   return g;
 }

@@ -150,10 +150,18 @@ class DiscreteGradient {
   // Gonzalez discrete gradient of Ĥ between ŷ and ŷ⁺. The bracket is the
   // midpoint-rule error of ΔĤ; below the round-off of the terms that form it
   // it is noise, and dividing it by |Δ|² would amplify that noise.
+  //
+  // A problem may say that Ĥ does not depend on some ŷ_k (InvariantActive):
+  // the correction then stays off those, which keeps ΔĤ = g·Δŷ and leaves
+  // symmetries that the inactive invariants would break (composed
+  // Hamiltonians with radial potentials keep ℓ = q × p).
   Invariants HatGradient(const Invariants& yhat, double h0,
                          const Invariants& yplus) const {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
-    const Invariants delta = yplus - yhat;
+    Invariants delta = yplus - yhat;
+    if constexpr (requires { system_.problem().InvariantActive(0); })
+      for (int k = 0; k < kK; ++k)
+        if (!system_.problem().InvariantActive(k)) delta[k] = 0;
     const Invariants g = HatGradientAt(0.5 * (yhat + yplus));
     const double h1 = Hhat(yplus);
     const double defect = h1 - h0 - g.dot(delta);

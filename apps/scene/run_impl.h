@@ -1,0 +1,327 @@
+// The scene runner's templates (run.h), instantiated once per supported DOF
+// count (run_dof.cc.in) and once per registered Lagrangian (registered.cc).
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/scene/reference.h"
+#include "apps/scene/run.h"
+#include "core/autodiff/pointwise.h"
+#include "problems/composed.h"
+#include "problems/composed_hamiltonian.h"
+#include "solvers/steppers/integrate.h"
+#include "solvers/steppers/methods.h"
+#include "solvers/variational/ceres_lm.h"
+#include "solvers/variational/march.h"
+#include "solvers/variational/solve_ivp.h"
+
+namespace vivp::scene::detail {
+
+using Clock = std::chrono::steady_clock;
+inline double Since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The built-in effects of a scene (registered Lagrangians excluded).
+std::vector<problems::Effect> BuiltInEffects(const Scene& s);
+
+// A registered C++ Lagrangian U plus the scene's built-in effects.
+template <class U>
+struct WithUser {
+  static constexpr int kDim = U::kDim;
+  U user;
+  problems::Composed<U::kDim> rest;
+
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return user(x, v) + rest(x, v);
+  }
+  template <class T>
+  T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
+    T sum = rest.Lambda(x1, v1, x2, v2);
+    if constexpr (action::HasLambda<U>) sum += user.Lambda(x1, v1, x2, v2);
+    return sum;
+  }
+  template <class Real>
+  void AddDiagonalDerivatives(const Real* p,
+                              action::Diagonal<Real, kDim>& out) const {
+    action::AddLagrangianTerm<action::Depends::kBoth, kDim>(user, p, out);
+    if constexpr (action::HasLambda<U>)
+      action::AddLambdaTerm<kDim>(
+          [&](const auto*... a) { return user.Lambda(a...); }, p, out);
+    rest.AddDiagonalDerivatives(p, out);
+  }
+  template <class Real>
+  void AddDiagonalGradient(const Real* p,
+                           action::DiagonalVector<Real, kDim>& out) const {
+    action::AddLagrangianTermGradient<action::Depends::kBoth, kDim>(user, p,
+                                                                   out);
+    if constexpr (action::HasLambda<U>)
+      action::AddLambdaTermGradient<kDim>(
+          [&](const auto*... a) { return user.Lambda(a...); }, p, out);
+    rest.AddDiagonalGradient(p, out);
+  }
+};
+
+// The per-node columns a scene asks for: diagnostics from the Lagrangian by
+// automatic differentiation (energy v·∂L/∂v − L, momentum ∂L/∂v, angular
+// momentum x × p), and the reference with its errors. Every stride-th node
+// (and the last) goes to the sink.
+template <class P>
+class NodeEmitter {
+ public:
+  static constexpr int d = P::kDim;
+
+  NodeEmitter(const P& problem, const Scene& s, RunSink& sink)
+      : problem_(problem), scene_(s), sink_(sink) {
+    auto& c = layout_.columns;
+    layout_.dof = d;
+    if (s.Wants("energy")) c.push_back("energy");
+    if (s.Wants("momentum"))
+      for (int k = 0; k < d; ++k) c.push_back("p" + std::to_string(k));
+    if (s.Wants("angular_momentum")) {
+      if (d == 2) c.push_back("angular_momentum");
+      if (d == 3)
+        for (const char* n : {"angular_momentum_x", "angular_momentum_y",
+                              "angular_momentum_z"})
+          c.push_back(n);
+    }
+    reference_ = MakeReference(problem, s);
+    if (reference_) {
+      layout_.reference_x = int(c.size());
+      for (int k = 0; k < d; ++k) c.push_back("x_reference" + std::to_string(k));
+      for (int k = 0; k < d; ++k) c.push_back("v_reference" + std::to_string(k));
+      if (s.Wants("energy")) c.push_back("energy_reference");
+      if (s.Wants("error")) {
+        c.push_back("error_x");
+        c.push_back("error_v");
+      }
+    }
+    values_.resize(c.size());
+    sink_.Begin(layout_);
+  }
+
+  const RunLayout& layout() const { return layout_; }
+  std::string reference_description() const {
+    return reference_ ? reference_->description() : "";
+  }
+
+  // Node `index` of the grid (0 … points − 1).
+  void Node(long long index, double t, const double* x, const double* v) {
+    if (index % scene_.output.stride != 0 && index != scene_.points - 1)
+      return;
+    int k = 0;
+    double p[d] = {};
+    if (scene_.Wants("energy") || scene_.Wants("momentum") ||
+        scene_.Wants("angular_momentum"))
+      Momentum(x, v, p);
+    if (scene_.Wants("energy")) values_[k++] = energy_;
+    if (scene_.Wants("momentum"))
+      for (int c = 0; c < d; ++c) values_[k++] = p[c];
+    if (scene_.Wants("angular_momentum")) {
+      if constexpr (d == 2) values_[k++] = x[0] * p[1] - x[1] * p[0];
+      if constexpr (d == 3) {
+        values_[k++] = x[1] * p[2] - x[2] * p[1];
+        values_[k++] = x[2] * p[0] - x[0] * p[2];
+        values_[k++] = x[0] * p[1] - x[1] * p[0];
+      }
+    }
+    if (reference_) {
+      double xr[d], vr[d], pr[d] = {};
+      reference_->State(t, xr, vr);
+      for (int c = 0; c < d; ++c) values_[k++] = xr[c];
+      for (int c = 0; c < d; ++c) values_[k++] = vr[c];
+      if (scene_.Wants("energy")) {
+        Momentum(xr, vr, pr);
+        values_[k++] = energy_;
+      }
+      if (scene_.Wants("error")) {
+        double ex = 0, ev = 0;
+        for (int c = 0; c < d; ++c) {
+          ex = std::max(ex, std::abs(x[c] - xr[c]));
+          ev = std::max(ev, std::abs(v[c] - vr[c]));
+        }
+        values_[k++] = ex;
+        values_[k++] = ev;
+      }
+    }
+    sink_.Node(t, x, v, values_.data());
+  }
+
+ private:
+  // p = ∂L/∂v and energy_ = v·p − L at (x, v).
+  void Momentum(const double* x, const double* v, double* p) {
+    double z[2 * d];
+    for (int c = 0; c < d; ++c) {
+      z[c] = x[c];
+      z[d + c] = v[c];
+    }
+    const auto [lagrangian, grad] = ad::Gradient<double, 2 * d>(
+        [&](const auto* s) { return problem_(s, s + d); }, z);
+    energy_ = -lagrangian;
+    for (int c = 0; c < d; ++c) {
+      p[c] = grad[d + c];
+      energy_ += v[c] * p[c];
+    }
+  }
+
+  const P& problem_;
+  const Scene& scene_;
+  RunSink& sink_;
+  RunLayout layout_;
+  std::unique_ptr<Reference> reference_;
+  std::vector<double> values_;
+  double energy_ = 0;
+};
+
+inline Path SolverPath(const std::string& name) {
+  if (name == "full-newton") return Path::kFullNewton;
+  if (name == "ceres-lm") return Path::kCeresLm;
+  return Path::kReducedNewton;
+}
+
+template <class P>
+RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
+  constexpr int d = P::kDim;
+  const Grid grid{.op = s.method.op,
+                  .points = s.points,
+                  .t_start = s.t_start,
+                  .t_end = s.t_end};
+  const InitialData initial{s.x0, s.v0};
+  NodeEmitter<P> emit(problem, s, sink);
+  RunOutcome out;
+  out.method = "variational, " + s.method.op + ", " + s.method.solver;
+  nlohmann::json& j = out.solver;
+  j["reference"] = emit.reference_description();
+  const auto start = Clock::now();
+  if (s.method.slab_points == 0) {
+    SolveOptions options;
+    options.path = SolverPath(s.method.solver);
+    const IvpSolution<double> sol =
+        options.path == Path::kCeresLm
+            ? SolveIvpCeres(problem, initial, grid, options)
+            : SolveIvp(problem, initial, grid, options);
+    out.seconds = Since(start);
+    out.converged = sol.status.converged;
+    out.status = sol.status.converged ? "converged" : sol.status.reason;
+    j["iterations"] = sol.iterations;
+    j["gradient_norm"] = sol.gradient_norm;
+    j["residual_norm"] = sol.residual_norm;
+    j["max_path_difference"] = sol.max_path_difference;
+    j["end_position_error_estimate"] = sol.corrected.position_error_estimate;
+    j["end_velocity_error_estimate"] = sol.corrected.velocity_error_estimate;
+    out.end_x = sol.corrected.position;
+    out.end_v = s.order == 2 ? sol.corrected.velocity
+                             : std::vector<double>(d, 0.0);
+    for (int i = 0; i < sol.points(); ++i) {
+      double x[d], v[d];
+      for (int c = 0; c < d; ++c) {
+        x[c] = sol.x1(i, c);
+        v[c] = sol.velocity(i, c);
+      }
+      emit.Node(i, sol.t[i], x, v);
+    }
+    return out;
+  }
+  out.method += ", marched in windows of " +
+                std::to_string(s.method.slab_points) + " points";
+  MarchOptions options;
+  options.window_points = s.method.slab_points;
+  options.keep_trajectory = false;
+  options.solve.path = SolverPath(s.method.solver);
+  long long index = 0;
+  double output_seconds = 0;
+  const double span = s.t_end - s.t_start;
+  const MarchResult r = MarchIvp(
+      problem, initial, grid, options,
+      [&](double t, const double* x, const double* v) {
+        const auto t0 = Clock::now();
+        emit.Node(index++, t, x, v);
+        sink.Progress((t - s.t_start) / span);
+        output_seconds += Since(t0);
+      });
+  out.seconds = Since(start) - output_seconds;
+  out.converged = r.status.converged;
+  out.status = r.status.converged ? "converged" : r.status.reason;
+  if (r.status.converged && !r.status.reason.empty())
+    out.status += " (" + r.status.reason + ")";
+  j["windows"] = r.window_count;
+  j["fallbacks"] = r.fallbacks;
+  j["refinement"] = r.refinement;
+  j["factorizations"] = r.iterations;
+  j["corrections"] = r.corrections;
+  j["error_estimate"] = r.error_estimate;
+  out.end_x = r.end_position;
+  out.end_v = r.end_velocity;
+  return out;
+}
+
+template <int D>
+RunOutcome RunStepper(const problems::Composed<D>& lagrangian,
+                      const Scene& s, RunSink& sink) {
+  using H = problems::ComposedHamiltonian<D>;
+  const H hamiltonian(lagrangian.effects);
+  const steppers::HamiltonianSystem<H> system(hamiltonian);
+  auto stepper = steppers::MakeStepper<H>(s.method.kind, system);
+  NodeEmitter<problems::Composed<D>> emit(lagrangian, s, sink);
+  RunOutcome out;
+  out.method = "stepper " + s.method.kind;
+  out.solver["reference"] = emit.reference_description();
+  typename steppers::HamiltonianSystem<H>::Vector y;
+  const Eigen::Map<const Eigen::Matrix<double, D, 1>> x0(s.x0.data()),
+      v0(s.v0.data());
+  y << x0, hamiltonian.mass() * v0;
+  const long steps = long(s.points - 1);
+  const double h = (s.t_end - s.t_start) / double(steps);
+  long long index = 0;
+  double output_seconds = 0;
+  const auto start = Clock::now();
+  const steppers::RunReport r = steppers::Integrate(
+      stepper, y, h, steps, [&](double t, const auto& state) {
+        const auto t0 = Clock::now();
+        const Eigen::Matrix<double, D, 1> v =
+            hamiltonian.inverse_mass() * state.template tail<D>();
+        // The last node lands on end exactly, whatever n·h rounds to.
+        const double time = index == steps ? s.t_end : s.t_start + t;
+        emit.Node(index++, time, state.data(), v.data());
+        sink.Progress(t / (s.t_end - s.t_start));
+        output_seconds += Since(t0);
+      });
+  out.seconds = Since(start) - output_seconds;
+  out.converged = r.status == steppers::Status::kOk;
+  out.status = out.converged
+                   ? "completed"
+                   : steppers::ToString(r.status) + " at t = " +
+                         std::to_string(s.t_start + r.failed_at);
+  out.solver["step"] = h;
+  out.solver["steps"] = r.steps;
+  out.solver["iterations"] = r.iterations;
+  out.solver["iterations_per_step"] = r.iterations_per_step();
+  out.solver["max_iterations_per_step"] = r.max_iterations;
+  out.solver["evaluations"] = r.evaluations;
+  out.end_x.assign(y.data(), y.data() + D);
+  const Eigen::Matrix<double, D, 1> v_end =
+      hamiltonian.inverse_mass() * y.template tail<D>();
+  out.end_v.assign(v_end.data(), v_end.data() + D);
+  return out;
+}
+
+// A scene of built-in effects with D degrees of freedom.
+template <int D>
+RunOutcome RunEffects(const Scene& s, RunSink& sink) {
+  const problems::Composed<D> composed{BuiltInEffects(s)};
+  if (s.variational()) return RunVariational(composed, s, sink);
+  return RunStepper<D>(composed, s, sink);
+}
+
+// A scene with the registered Lagrangian U (variational only).
+template <class U>
+RunOutcome RunWithUser(const U& user, const Scene& s, RunSink& sink) {
+  const WithUser<U> p{user, {BuiltInEffects(s)}};
+  return RunVariational(p, s, sink);
+}
+
+}  // namespace vivp::scene::detail

@@ -1,0 +1,71 @@
+// The equation of motion a problem's action implies, evaluated pointwise by
+// automatic differentiation of the same density the solver uses. The
+// variational solver never needs it; it serves reference solutions and
+// checks (a scene's `reference = "ode"`, conserved quantities).
+//
+// With (g_x, g_v) = ∂f/∂(x₋, v₋) at x₋ = 0 and G = ∂(g_x, g_v)/∂(x₊, v₊)
+// (DiagonalDerivatives), the Euler–Lagrange equation ∂f/∂x₋ − d/dt ∂f/∂v₋ = 0
+// of the doubled action (Galley's form, seed 000 eq. 34) reads
+//   g_x − G_vx ẋ − G_vv ẍ = 0.
+// Second order (G_vv = ∂²L/∂v² invertible): ẍ = G_vv⁻¹(g_x − G_vx ẋ).
+// First order (L linear in v): g_x(x, ẋ) − G_vx ẋ = 0 is solved for ẋ.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/action/density.h"
+
+namespace vivp::action {
+
+template <class P>
+using StateVector = Eigen::Matrix<double, P::kDim, 1>;
+
+// ẍ at (x, ẋ) of a second-order problem.
+template <class P>
+StateVector<P> Acceleration(const P& problem, const double* x,
+                            const double* v) {
+  constexpr int d = P::kDim;
+  double p[2 * d];
+  for (int c = 0; c < d; ++c) {
+    p[c] = x[c];
+    p[d + c] = v[c];
+  }
+  const auto g = DiagonalDerivatives<double>(problem, p);
+  const Eigen::Map<const StateVector<P>> vel(v);
+  const StateVector<P> rhs =
+      g.dm.template head<d>() - g.dmp.template block<d, d>(d, 0) * vel;
+  return g.dmp.template block<d, d>(d, d).partialPivLu().solve(rhs);
+}
+
+// ẋ at x of a first-order problem: Newton on F(ẋ) = g_x − G_vx ẋ from
+// `guess`, with Jacobian ∂g_x/∂v₊ − G_vx (exact when L and Λ are linear in
+// the velocity, as for every first-order system of seed 000). Throws
+// std::runtime_error when F has no zero there (the equation is singular).
+template <class P>
+StateVector<P> FirstOrderVelocity(const P& problem, const double* x,
+                                  StateVector<P> guess) {
+  constexpr int d = P::kDim;
+  double p[2 * d];
+  for (int c = 0; c < d; ++c) p[c] = x[c];
+  for (int it = 0; it < 50; ++it) {
+    for (int c = 0; c < d; ++c) p[d + c] = guess[c];
+    const auto g = DiagonalDerivatives<double>(problem, p);
+    const Eigen::Matrix<double, d, d> gvx = g.dmp.template block<d, d>(d, 0);
+    const StateVector<P> f = g.dm.template head<d>() - gvx * guess;
+    const Eigen::Matrix<double, d, d> jac =
+        g.dmp.template block<d, d>(0, d) - gvx;
+    const StateVector<P> step = jac.fullPivLu().solve(f);
+    if (!step.allFinite())
+      throw std::runtime_error(
+          "the first-order equation g_x(x, ẋ) = 0 cannot be solved for ẋ");
+    guess -= step;
+    if (step.template lpNorm<Eigen::Infinity>() <=
+        4e-16 * (1 + guess.template lpNorm<Eigen::Infinity>()))
+      break;
+  }
+  return guess;
+}
+
+}  // namespace vivp::action
