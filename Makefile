@@ -19,7 +19,7 @@ build: configure
 	@cmake --build $(BUILD) -j $(JOBS) -- --no-print-directory
 
 demo: build
-	./$(BUILD)/apps/vivp spectrum --operator sbp21 --points 32 --plot $(BUILD)/demo --force
+	./$(BUILD)/apps/vivp run --out $(BUILD)/demo --force
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)

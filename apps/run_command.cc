@@ -201,7 +201,8 @@ class ProgressLine {
 
 // gnuplot scripts next to the PNGs; they read the CSV files directly.
 std::vector<std::string> WritePlots(const fs::path& dir, const scene::Scene& s,
-                                    const scene::RunLayout& layout) {
+                                    const scene::RunLayout& layout,
+                                    const std::vector<ColumnStats>& stats) {
   std::vector<std::string> files;
   const int d = layout.dof;
   auto column = [&](const std::string& name) {
@@ -256,13 +257,31 @@ std::vector<std::string> WritePlots(const fs::path& dir, const scene::Scene& s,
         plot::Figure fig(dir, stem);
         header(fig);
         time_axis(fig);
-        fig.script() << "set xlabel 't'\nset ylabel '" << ylabel << "'\n"
-                     << (log ? "set logscale y\nset format y '%.0e'\n" : "")
-                     << "plot ";
-        for (std::size_t k = 0; k < curves.size(); ++k)
-          fig.script() << (k ? ", " : "") << "'diagnostics.csv' using 1:"
-                       << column(curves[k].first) << " with lines lw 2 title '"
-                       << curves[k].second << "'";
+        // A quantity that stays within 1e-3 (relative) of its initial value is
+        // plotted as its change q(t) − q(0): the conservation error is what a
+        // reader wants to see, and tick labels could not resolve it otherwise.
+        bool deviation = !log;
+        for (const auto& curve : curves) {
+          const ColumnStats& c = stats[column(curve.first) - 2];
+          deviation = deviation && std::isfinite(c.first) &&
+                      std::max(c.max - c.first, c.first - c.min) <=
+                          1e-3 * std::max(std::abs(c.first), 1e-300);
+        }
+        fig.script() << "set xlabel 't'\nset ylabel '" << ylabel
+                     << (deviation ? ": change since the start" : "") << "'\n"
+                     << (log || deviation ? "set format y '%.1e'\n" : "")
+                     << (log ? "set logscale y\n" : "") << "plot "
+                     << std::setprecision(17);
+        for (std::size_t k = 0; k < curves.size(); ++k) {
+          const int col = column(curves[k].first);
+          fig.script() << (k ? ", " : "") << "'diagnostics.csv' using 1:";
+          if (deviation)
+            fig.script() << "($" << col << " - (" << stats[col - 2].first
+                         << "))";
+          else
+            fig.script() << col;
+          fig.script() << " with lines lw 2 title '" << curves[k].second << "'";
+        }
         fig.script() << "\n";
         fig.Render();
         files.push_back(stem + ".png");
@@ -354,7 +373,7 @@ int RunScene(const RunCommandOptions& o) {
   sink.Finish();
   std::vector<std::string> files = {"trajectory.csv", "summary.json"};
   if (!sink.layout().columns.empty()) files.push_back("diagnostics.csv");
-  for (const auto& f : WritePlots(staging, s, sink.layout()))
+  for (const auto& f : WritePlots(staging, s, sink.layout(), sink.stats()))
     files.push_back(f);
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)

@@ -86,7 +86,8 @@ void PrintSummary(std::ostream& out, const SpectrumOptions& o,
     cluster = std::max(cluster, std::abs(sd.eigenvalues[i]));
   out << cluster << " (1/dt = " << 1 / d.dt() << ")\n";
   if (sd.right_null_vector.size() > 0) {
-    out << "      right null vector ~ " << Pattern(sd.right_null_vector) << "\n";
+    out << "      right null vector ~ " << Pattern(sd.right_null_vector)
+        << "\n";
     out << "      left null vector  ~ " << Pattern(sd.left_null_vector) << "\n";
   }
   out << "  D̄ : " << sdbar.zero.algebraic_multiplicity
@@ -159,9 +160,10 @@ Runner AddSpectrumCommand(CLI::App& app) {
   cmd->add_option("--points", o->points,
                   "number of time points N (at least 2, 8, 12, 16 for "
                   "sbp21, sbp42, sbp63, sbp84)")
-      ->check(WholeNumberAtLeast(1, "of time points >= 1 (the operator's "
-                                    "minimum: sbp21 2, sbp42 8, sbp63 12, "
-                                    "sbp84 16)"))
+      ->check(WholeNumberAtLeast(1,
+                                 ">= 1 (time points; the operator's "
+                                 "minimum: sbp21 2, sbp42 8, sbp63 12, "
+                                 "sbp84 16)"))
       ->capture_default_str();
   cmd->add_option("--sigma0", o->sigma0,
                   "SAT penalty parameter of D̄ (the paper uses -1)")
@@ -170,7 +172,8 @@ Runner AddSpectrumCommand(CLI::App& app) {
   cmd->add_option("--t-end", o->t_end, "end of the time interval [0, T]")
       ->check(FiniteNumber())
       ->capture_default_str();
-  cmd->add_option("--json", o->json, "write the analysis as JSON (- for stdout)");
+  cmd->add_option("--json", o->json,
+                  "write the analysis as JSON (- for stdout)");
   cmd->add_option("--plot", o->plot,
                   "write Figs. 3-4 (PNG, data, gnuplot script) into this "
                   "directory");

@@ -50,13 +50,13 @@ BOOST_AUTO_TEST_CASE(BadInput_ExitsTwoWithOneLineNamingValidValues) {
       {"spectrum --operator sbp42 --points 5",
        "vivp: error: sbp42 needs at least 8 points, got 5"},
       {"spectrum --operator sbp21 --points=-4",
-       "vivp: error: --points: must be of time points >= 1 (the operator's "
+       "vivp: error: --points: must be >= 1 (time points; the operator's "
        "minimum: sbp21 2, sbp42 8, sbp63 12, sbp84 16), got -4 (see 'vivp "
        "--help')"},
       {"spectrum --operator sbp21 --points abc",
-       "vivp: error: --points: expected a whole number of time points >= 1 "
-       "(the operator's minimum: sbp21 2, sbp42 8, sbp63 12, sbp84 16), got "
-       "'abc' (see 'vivp --help')"},
+       "vivp: error: --points: expected a whole number >= 1 (time points; the "
+       "operator's minimum: sbp21 2, sbp42 8, sbp63 12, sbp84 16), got 'abc' "
+       "(see 'vivp --help')"},
       {"spectrum --operator sbp21 --points 32 --sigma0 nan",
        "vivp: error: --sigma0: must be finite, got 'nan' (see 'vivp --help')"},
       {"spectrum --operator sbp21 --points 32 --sigma0 inf",

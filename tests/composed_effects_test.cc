@@ -87,3 +87,78 @@ BOOST_AUTO_TEST_CASE(ComposedDampedOscillator_SolvesLikeTheHandWrittenOne) {
   BOOST_TEST(b.status.converged);
   BOOST_TEST((a.x1 - b.x1).cwiseAbs().maxCoeff() <= 1e-12);
 }
+
+namespace {
+
+// The same composition, differentiated whole: no AddDiagonalDerivatives, so
+// core/action/density.h takes ∂/∂(x, v) of L and Λ in all 2d variables.
+template <int D>
+struct Whole {
+  static constexpr int kDim = D;
+  const Composed<D>& c;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return c(x, v);
+  }
+  template <class T>
+  T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
+    return c.Lambda(x1, v1, x2, v2);
+  }
+};
+
+// Largest difference, relative to the largest entry, between the term-by-term
+// and the whole derivatives (gradient and mixed Hessian of the ± density)
+// over 100 random points p = (x₊, v₊).
+template <int D>
+double TermByTermDeviation(const Composed<D>& c) {
+  static_assert(action::DifferentiatesByTerms<Composed<D>, double>);
+  static_assert(!action::DifferentiatesByTerms<Whole<D>, double>);
+  const Whole<D> whole{c};
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  double worst = 0;
+  for (int k = 0; k < 100; ++k) {
+    double p[2 * D];
+    for (double& e : p) e = u(rng);
+    const auto a = action::DiagonalDerivatives<double>(c, p);
+    const auto b = action::DiagonalDerivatives<double>(whole, p);
+    const auto ga = action::DiagonalGradient<double>(c, p);
+    const auto gb = action::DiagonalGradient<double>(whole, p);
+    const double scale = std::max(
+        {1.0, b.dm.cwiseAbs().maxCoeff(), b.dmp.cwiseAbs().maxCoeff()});
+    worst = std::max({worst, (a.dm - b.dm).cwiseAbs().maxCoeff() / scale,
+                      (a.dmp - b.dmp).cwiseAbs().maxCoeff() / scale,
+                      (ga - gb).cwiseAbs().maxCoeff() / scale,
+                      (ga - b.dm).cwiseAbs().maxCoeff() / scale});
+  }
+  return worst;
+}
+
+}  // namespace
+
+// Each effect declares whether it depends on x, on ẋ or on both (kDepends),
+// and a composition differentiates each term only in those variables. A
+// wrong declaration would silently drop derivatives; this checks every
+// effect, alone and all together, against differentiating the whole density.
+BOOST_AUTO_TEST_CASE(TermByTermDerivatives_EqualThoseOfTheWholeDensity) {
+  using namespace effects;
+  const std::vector<double> m2 = {2.0, 0.3, 0.3, 1.0};
+  const std::vector<Effect> each2 = {
+      Kinetic{0.7, {}},      Kinetic{1.0, m2},
+      Gravity{1.5, 9.81, 1}, Spring{2.0, {0.1, -0.2}},
+      Quartic{3.0},          effects::Pendulum{2.0, 1},
+      Central{1.3},          GaussianWell{0.8},
+      Chain{2.0, 0.5, true}, Chain{1.0, 0.0, false},
+      Damping{0.3},          Growth{2.5}};
+  for (const Effect& e : each2) {
+    BOOST_TEST_CONTEXT("effect #" << e.index()) {
+      BOOST_TEST(TermByTermDeviation(Composed<2>({e})) <= 1e-14);
+    }
+  }
+  std::vector<Effect> all(each2.begin(), each2.end());
+  all.erase(all.begin());  // one kinetic term
+  BOOST_TEST(TermByTermDeviation(Composed<2>(all)) <= 1e-14);
+  BOOST_TEST(TermByTermDeviation(Composed<3>(
+                 {Kinetic{}, Chain{1.0, 1.0, true}, Central{}, Damping{0.1},
+                  Gravity{}, Spring{1.0, {0.0, 1.0, 2.0}}})) <= 1e-14);
+}

@@ -159,11 +159,17 @@ BOOST_AUTO_TEST_CASE(SceneCheck_AcceptsEveryShippedScene) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(VIVP_SCENES_DIR)) {
     const Run r = Vivp("scene check " + e.path().string());
+    // A build with fewer VIVP_SCENE_DOFS (the sanitizer build of .ci/run)
+    // refuses the FPU chain's dof = 8 by name; nothing else may fail.
+    if (r.status == 2 &&
+        r.err.find("is not among the compiled sizes") != std::string::npos &&
+        e.path().stem() == "fpu_chain")
+      continue;
     BOOST_TEST(r.status == 0, e.path() << ": " << r.err);
     BOOST_TEST(r.out.find(": ok") != std::string::npos);
     ++n;
   }
-  BOOST_TEST(n >= 10);
+  BOOST_TEST(n >= 9);
 }
 
 BOOST_AUTO_TEST_CASE(UnderResolvedSolve_IsReportedNotHidden) {

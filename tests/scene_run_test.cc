@@ -207,13 +207,27 @@ double MaxDifference(const Path& a, const Path& b) {
 
 BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
   const auto solves = ApiSolves();
-  int checked = 0;
+  int checked = 0, skipped = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(VIVP_SCENES_DIR)) {
     if (entry.path().extension() != ".toml") continue;
     const std::string stem = entry.path().stem().string();
     BOOST_TEST_CONTEXT("scene " << stem) {
-      const scene::Scene s = scene::ReadScene(entry.path());
+      // A build may compile fewer sizes (VIVP_SCENE_DOFS; the sanitizer
+      // build of .ci/run compiles 1 and 2): those scenes are refused by the
+      // reader with the list, and counted as skipped.
+      scene::Scene s;
+      try {
+        s = scene::ReadScene(entry.path());
+      } catch (const scene::SceneError& e) {
+        const std::string what = e.what();
+        BOOST_TEST_REQUIRE(
+            what.find("is not among the compiled sizes") != std::string::npos,
+            what);
+        BOOST_TEST_MESSAGE(stem << ": skipped, " << what);
+        ++skipped;
+        continue;
+      }
       const auto api = solves.find(stem);
       BOOST_TEST_REQUIRE((api != solves.end()),
                          "no API counterpart for the shipped scene " << stem);
@@ -226,7 +240,8 @@ BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
       ++checked;
     }
   }
-  BOOST_TEST(checked == int(solves.size()));
+  BOOST_TEST(checked + skipped == int(solves.size()));
+  BOOST_TEST(skipped <= 1);  // only the FPU chain (dof 8) may be missing
 }
 
 BOOST_AUTO_TEST_CASE(DefaultScene_IsTheShippedLateTimeScene) {

@@ -2,14 +2,15 @@
 // formulation notes §1.2). Multiplicities are counts through ranks of nested
 // null spaces, never thresholded eigenvalues.
 #define BOOST_TEST_MODULE spectrum
+#include "core/spectrum.h"
+
+#include <algorithm>
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
-
 #include <limits>
 
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
-#include "core/spectrum.h"
 
 using vivp::AnalyzeSpectrum;
 using vivp::Spectrum;
@@ -117,4 +118,17 @@ BOOST_DATA_TEST_CASE(JordanStructure_MatchesExactRanks_AndDbarHasNoZeroModes,
   const Spectrum sbar = OfDbar(c.name, c.n);
   BOOST_TEST(sbar.zero.geometric_multiplicity == 0);
   BOOST_TEST(sbar.min_real_part > 0.0);
+  // The real eigenvalues of D̄: the affine eigenvalue 1 alone for even N;
+  // odd N adds one more, above 1 (measured at N = 17: 4.159, 5.783, 6.249,
+  // 7.883 for SBP21/42/63/84; reported in the README).
+  const auto& real = sbar.real_eigenvalues;
+  BOOST_TEST_MESSAGE(c.name << " N = " << c.n << ": " << real.size()
+                            << " real eigenvalue(s) of D̄, largest "
+                            << *std::max_element(real.begin(), real.end()));
+  BOOST_TEST(real.size() == (c.n % 2 == 1 ? 2u : 1u));
+  BOOST_TEST(std::count_if(real.begin(), real.end(), [](double v) {
+               return std::abs(v - 1.0) <= 1e-8;
+             }) == 1);
+  if (c.n % 2 == 1)
+    BOOST_TEST(*std::max_element(real.begin(), real.end()) > 2.0);
 }

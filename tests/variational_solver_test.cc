@@ -3,14 +3,16 @@
 #define BOOST_TEST_MODULE variational_solver
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
-
 #include <limits>
 
 #include "problems/anharmonic.h"
 #include "problems/coupled_oscillators.h"
+#include "problems/cyclotron.h"
 #include "problems/damped_oscillator.h"
 #include "problems/exponential.h"
 #include "problems/free_fall.h"
+#include "problems/kepler.h"
+#include "problems/pendulum.h"
 #include "solvers/variational/registry.h"
 #include "solvers/variational/solve_ivp.h"
 
@@ -44,12 +46,9 @@ std::ostream& operator<<(std::ostream& os, const PaperOrder& p) {
 const double kNone = std::numeric_limits<double>::quiet_NaN();
 // Paper values (formulation §1.5 table): the acceptance items of issue 3.
 const PaperOrder kPaperOrders[] = {
-    {"freefall", "sbp21", 2.03, kNone},
-    {"exponential", "sbp21", 2.03, 1.06},
-    {"exponential", "sbp42", 2.95, 1.99},
-    {"damped", "sbp21", 2.03, 1.01},
-    {"damped", "sbp42", 3.04, 2.06},
-    {"anharmonic", "sbp42", 3.35, kNone},
+    {"freefall", "sbp21", 2.03, kNone},   {"exponential", "sbp21", 2.03, 1.06},
+    {"exponential", "sbp42", 2.95, 1.99}, {"damped", "sbp21", 2.03, 1.01},
+    {"damped", "sbp42", 3.04, 2.06},      {"anharmonic", "sbp42", 3.35, kNone},
 };
 
 }  // namespace
@@ -57,12 +56,14 @@ const PaperOrder kPaperOrders[] = {
 BOOST_DATA_TEST_CASE(FittedOrders_MatchThePaperWithinPointOne,
                      bdata::make(kPaperOrders), p) {
   const ConvergenceStudy s = Study(p.problem, p.op);
-  for (const auto& r : s.rows) BOOST_TEST(r.converged, r.points << " " << r.reason);
+  for (const auto& r : s.rows)
+    BOOST_TEST(r.converged, r.points << " " << r.reason);
   BOOST_TEST(std::abs(s.orders.x - p.value) <= 0.1,
              "value order " << s.orders.x << " vs paper " << p.value);
   if (!std::isnan(p.derivative))
-    BOOST_TEST(std::abs(s.orders.v - p.derivative) <= 0.1,
-               "derivative order " << s.orders.v << " vs paper " << p.derivative);
+    BOOST_TEST(
+        std::abs(s.orders.v - p.derivative) <= 0.1,
+        "derivative order " << s.orders.v << " vs paper " << p.derivative);
 }
 
 BOOST_AUTO_TEST_CASE(FreeFallSbp21_TrueGridSpacingGivesExactlyTwo) {
@@ -91,7 +92,8 @@ BOOST_AUTO_TEST_CASE(PiMode_UnregularizedSolveIsWrongOnEvenNodes) {
   const NamedProblem& ff = FindProblem("freefall");
   auto max_error = [&](const IvpSolution<double>& s, int parity) {
     double m = 0;
-    for (int i = parity < 0 ? 0 : parity; i < s.points(); i += parity < 0 ? 1 : 2)
+    for (int i = parity < 0 ? 0 : parity; i < s.points();
+         i += parity < 0 ? 1 : 2)
       m = std::max(m, std::abs(s.x1(i, 0) - ff.exact(s.t[i]).x[0]));
     return m;
   };
@@ -134,8 +136,8 @@ BOOST_AUTO_TEST_CASE(LateTime_DampedSbp42StaysBoundedAndOnTheExactDecay) {
   }
   BOOST_TEST(max_error <= 5e-3);
   BOOST_TEST(max_energy_error <= 0.01);  // against E from 0.5 to 0.374
-  BOOST_TEST_MESSAGE("late time: max path error " << max_error
-                     << ", max energy error " << max_energy_error);
+  BOOST_TEST_MESSAGE("late time: max path error "
+                     << max_error << ", max energy error " << max_energy_error);
 }
 
 BOOST_DATA_TEST_CASE(Structure_PathsCoincideAndInitialMultipliersVanish,
@@ -201,7 +203,8 @@ BOOST_AUTO_TEST_CASE(CorrectedEndState_ConvergesAtTheOrdersOfSection18) {
   for (const auto& r : a42.rows)
     if (r.points >= 128) {
       const double ratio = r.error_estimate / r.err_x;
-      BOOST_TEST((ratio > 0.8 && ratio < 1.2), "Nt " << r.points << " ratio " << ratio);
+      BOOST_TEST((ratio > 0.8 && ratio < 1.2),
+                 "Nt " << r.points << " ratio " << ratio);
     }
 }
 
@@ -237,23 +240,24 @@ BOOST_AUTO_TEST_CASE(LongDouble_ReducedNewtonReachesBelowDoubleRoundOff) {
 BOOST_AUTO_TEST_CASE(BadInput_IsRejectedWithMessages) {
   problems::FreeFall ff;
   problems::Exponential ex;
-  BOOST_CHECK_EXCEPTION(SolveIvp(ff, {{1.0}, {}}, {}), std::invalid_argument,
-                        [](const auto& e) {
-                          return std::string(e.what()).find("needs an initial velocity") !=
-                                 std::string::npos;
-                        });
-  BOOST_CHECK_EXCEPTION(SolveIvp(ex, {{1.0}, {0.3}}, {}), std::invalid_argument,
-                        [](const auto& e) {
-                          return std::string(e.what()).find("give no initial velocity") !=
-                                 std::string::npos;
-                        });
   BOOST_CHECK_EXCEPTION(
-      SolveIvp(ff, {{std::nan("")}, {0.3}}, {}), std::invalid_argument,
-      [](const auto& e) {
-        return std::string(e.what()).find("non-finite") != std::string::npos;
+      SolveIvp(ff, {{1.0}, {}}, {}), std::invalid_argument, [](const auto& e) {
+        return std::string(e.what()).find("needs an initial velocity") !=
+               std::string::npos;
       });
-  BOOST_CHECK_EXCEPTION(SolveIvp(ff, {{1.0, 2.0}, {0.3}}, {}), std::invalid_argument,
-                        [](const auto& e) {
+  BOOST_CHECK_EXCEPTION(
+      SolveIvp(ex, {{1.0}, {0.3}}, {}), std::invalid_argument,
+      [](const auto& e) {
+        return std::string(e.what()).find("give no initial velocity") !=
+               std::string::npos;
+      });
+  BOOST_CHECK_EXCEPTION(SolveIvp(ff, {{std::nan("")}, {0.3}}, {}),
+                        std::invalid_argument, [](const auto& e) {
+                          return std::string(e.what()).find("non-finite") !=
+                                 std::string::npos;
+                        });
+  BOOST_CHECK_EXCEPTION(SolveIvp(ff, {{1.0, 2.0}, {0.3}}, {}),
+                        std::invalid_argument, [](const auto& e) {
                           return std::string(e.what()).find("2 components") !=
                                  std::string::npos;
                         });
@@ -275,7 +279,7 @@ BOOST_AUTO_TEST_CASE(NonConvergence_IsReportedNotHidden) {
 
 BOOST_DATA_TEST_CASE(CeresLm_AgreesWithBothNewtonPaths,
                      bdata::make({"freefall", "anharmonic", "exponential",
-                                  "damped", "coupled"}),
+                                  "damped", "coupled", "pendulum", "kepler"}),
                      name) {
   Grid g;
   g.op = "sbp42";
@@ -296,7 +300,8 @@ BOOST_DATA_TEST_CASE(CeresLm_AgreesWithBothNewtonPaths,
 
 BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
                      bdata::make({"freefall", "anharmonic", "exponential",
-                                  "damped", "coupled"}),
+                                  "damped", "coupled", "pendulum", "kepler",
+                                  "cyclotron"}),
                      name) {
   // ∇S of the full doubled action by pointwise AD through the stencil,
   // against central differences of S, at a generic point (not a solution).
@@ -312,7 +317,8 @@ BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
     const int order = init.v.empty() ? 1 : 2;
     const action::FullSystem<P, double> full(problem, dbar, x0, v0, order);
     std::vector<double> u(full.size());
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] = 0.7 + 0.3 * std::sin(1.7 * i);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      u[i] = 0.7 + 0.3 * std::sin(1.7 * i);
     std::vector<double> g(u.size());
     full.Residual(u.data(), g.data());
     double worst = 0, gmax = 0;
@@ -321,7 +327,8 @@ BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
       auto up = u, um = u;
       up[i] += h;
       um[i] -= h;
-      const double fd = (full.Value(up.data()) - full.Value(um.data())) / (2 * h);
+      const double fd =
+          (full.Value(up.data()) - full.Value(um.data())) / (2 * h);
       worst = std::max(worst, std::abs(fd - g[i]));
       gmax = std::max(gmax, std::abs(g[i]));
     }
@@ -334,7 +341,11 @@ BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
   if (n == "anharmonic") check(problems::Anharmonic{}, {{1.0}, {0.3}});
   if (n == "exponential") check(problems::Exponential{}, {{1.0}, {}});
   if (n == "damped") check(problems::DampedOscillator{}, {{1.0}, {0.0}});
-  if (n == "coupled") check(problems::CoupledOscillators{}, {{1.0, 0.0}, {0.0, 0.3}});
+  if (n == "coupled")
+    check(problems::CoupledOscillators{}, {{1.0, 0.0}, {0.0, 0.3}});
+  if (n == "pendulum") check(problems::Pendulum{}, FindProblem(n).initial);
+  if (n == "kepler") check(problems::Kepler{}, FindProblem(n).initial);
+  if (n == "cyclotron") check(problems::Cyclotron{}, {{1.0, 0.0}, {0.0, -2.0}});
 }
 
 BOOST_DATA_TEST_CASE(NonlinearSystems_PendulumAndKeplerConvergeAtSbp42Orders,
@@ -343,8 +354,10 @@ BOOST_DATA_TEST_CASE(NonlinearSystems_PendulumAndKeplerConvergeAtSbp42Orders,
   // (Jacobi elliptic functions; Kepler's equation solved to round-off).
   Grid g;
   g.op = "sbp42";
-  const auto s = RunConvergence(FindProblem(name), g, {32, 64, 128, 256, 512}, {});
-  for (const auto& r : s.rows) BOOST_TEST(r.converged, r.points << " " << r.reason);
+  const auto s =
+      RunConvergence(FindProblem(name), g, {32, 64, 128, 256, 512}, {});
+  for (const auto& r : s.rows)
+    BOOST_TEST(r.converged, r.points << " " << r.reason);
   BOOST_TEST(std::abs(s.orders.x - 3.0) <= 0.15, "x order " << s.orders.x);
   BOOST_TEST(std::abs(s.orders.x_corrected - 4.0) <= 0.2,
              "corrected order " << s.orders.x_corrected);
