@@ -262,9 +262,14 @@ int RunVerify(BeaOptions o) {
           "--matrix as numbers");
     }
   }();
+  // derive only warns (the modified equation of an unstable method is still
+  // a formula); verify would integrate it and measure nothing but the
+  // blow-up of the parasitic root, ending in overflow.
   const auto stability = bea::CheckStability(coefficients);
   if (!stability.stable)
-    std::cerr << "vivp: warning: " << stability.reason << "\n";
+    throw UsageError("verify cannot measure conservation with an unstable "
+                     "method: " +
+                     stability.reason);
   if (o.potential.empty()) o.potential = o.dim == 1 ? "pendulum" : "gaussian";
   const bool radial =
       o.dim == 2 && o.matrix.empty() && o.potential == "gaussian";

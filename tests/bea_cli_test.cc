@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE bea_cli
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <boost/test/unit_test.hpp>
 #include <cstdio>
@@ -55,6 +56,16 @@ BOOST_AUTO_TEST_CASE(UnstableAlpha_WarnsWhy) {
   BOOST_TEST(r.status == 0);
   BOOST_TEST(Contains(r.err, "warning: unstable"));
   BOOST_TEST(Contains(r.err, "alpha <= 0"));
+  // verify would only measure the blow-up: refused, with the reason.
+  const auto v = Vivp(
+      "bea verify --method lmm4 --alpha 0.2 --dim 2 --steps 0.1,0.05 "
+      "--t-end 150 --json -");
+  BOOST_TEST(v.status == 2);
+  BOOST_TEST(Contains(v.err, "verify cannot measure conservation with an "
+                             "unstable method: unstable"));
+  BOOST_TEST(Contains(v.err, "alpha <= 0"));
+  BOOST_TEST(std::count(v.err.begin(), v.err.end(), '\n') == 1);
+  BOOST_TEST(v.out.empty());
 }
 
 BOOST_AUTO_TEST_CASE(DeriveStormerVerlet_PrintsHamiltonianAndPassedChecks) {

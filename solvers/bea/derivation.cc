@@ -68,7 +68,22 @@ Ostrogradsky Momenta(JetSpace& jet, const GiNaC::ex& L) {
 
 // Measured (bench/bea_bench): d = 1 reaches h^10 in 0.3 s; d = 2 costs about
 // tenfold per h^2 (general symbolic A: 0.4 s at h^4, 13 s at h^6).
-int MaxOrder(int dim) { return dim <= 1 ? 10 : dim == 2 ? 8 : 6; }
+int CoefficientSymbols(const Method& method) {
+  GiNaC::exset symbols;
+  for (const GiNaC::matrix& a : method.A)
+    for (unsigned k = 0; k < a.nops(); ++k)
+      for (GiNaC::const_preorder_iterator it = a.op(k).preorder_begin();
+           it != a.op(k).preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.insert(*it);
+  return static_cast<int>(symbols.size());
+}
+
+int MaxOrder(const Method& method) {
+  const int dim = method.dim;
+  const int base = dim <= 1 ? 10 : dim == 2 ? 8 : 6;
+  // Each further free coefficient multiplies the expression swell.
+  return CoefficientSymbols(method) > 1 ? base - 2 : base;
+}
 
 BeaResult Derive(const Method& method, const DeriveOptions& options) {
   const int N = options.order;
@@ -78,12 +93,15 @@ BeaResult Derive(const Method& method, const DeriveOptions& options) {
         "order must be even and at least 2 (symmetric methods have only even "
         "powers of h), got " +
         std::to_string(N));
-  if (N > MaxOrder(d)) {
+  if (N > MaxOrder(method)) {
     std::ostringstream msg;
-    msg << "order " << N << " in dimension " << d
-        << " is beyond what the engine reaches in reasonable time (maximum "
-        << MaxOrder(d)
+    const int symbols = CoefficientSymbols(method);
+    msg << "order " << N << " in dimension " << d;
+    if (symbols > 1) msg << " with " << symbols << " symbolic coefficients";
+    msg << " is beyond what the engine reaches in reasonable time (maximum "
+        << MaxOrder(method)
         << "; cost grows roughly tenfold per h^2); ask for a lower order";
+    if (symbols > 1) msg << " or give numeric coefficients";
     throw std::invalid_argument(msg.str());
   }
   if (options.symmetry &&
