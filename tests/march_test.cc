@@ -2,6 +2,7 @@
 #define BOOST_TEST_MODULE march
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
+#include <cmath>
 
 #include "core/fit.h"
 #include "problems/anharmonic.h"
@@ -152,6 +153,11 @@ BOOST_AUTO_TEST_CASE(ImpossibleWindow_IsReportedWithReason) {
   BOOST_TEST(r.status.reason.find("did not converge") != std::string::npos);
   BOOST_TEST(r.status.reason.find("no convergence in 1 iterations") !=
              std::string::npos);
+  // ... and with the residual it left (issue 4, hard case 7).
+  BOOST_TEST_MESSAGE("reason: " << r.status.reason);
+  BOOST_TEST(std::isfinite(r.last_residual));
+  BOOST_TEST(r.last_residual > 1e-8);  // far from a solution after 1 step
+  BOOST_TEST(r.status.reason.find("last residual") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(WindowBelowOperatorMinimum_IsRejected) {

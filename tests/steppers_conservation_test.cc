@@ -97,7 +97,8 @@ BOOST_AUTO_TEST_CASE(Kepler_Rk4LosesAngularMomentumBeyondRoundOff) {
 // relative). Midpoint does not keep H: its drift is measured and must
 // exceed the discrete gradient's by orders of magnitude.
 BOOST_DATA_TEST_CASE(Nldnls_ChargeKeptWithinOneEMinusTwelveOverTenThousandSteps,
-                     bdata::make({"midpoint", "gauss2", "discrete_gradient"}),
+                     bdata::make({"midpoint", "gauss2", "gauss3",
+                                  "discrete_gradient"}),
                      method) {
   const Chain chain;
   const Drift d = MeasureDrift(chain, method, 0.05, 10000);

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,6 @@
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp {
-
 
 namespace detail {
 
@@ -56,9 +56,9 @@ class WindowEngine {
                int order, int refine)
       : problem_(problem),
         grid_(WindowGrid(global, points, refine)),
-        dbar_(sbp::MakeOperator<double>(grid_.op, grid_.points, 0.0,
-                                        grid_.t_end),
-              grid_.sigma0),
+        dbar_(
+            sbp::MakeOperator<double>(grid_.op, grid_.points, 0.0, grid_.t_end),
+            grid_.sigma0),
         system_(problem, dbar_, State{}, State{}, order),
         y_(system_.size(), 0.0) {}
 
@@ -72,14 +72,14 @@ class WindowEngine {
   struct Outcome {
     solvers::NewtonReport report;
     CorrectedEnd<double> end;
-    std::string failure;     // empty on success
+    std::string failure;      // empty on success
     bool split_helps = true;  // false: a shorter window has the same Δt
   };
 
   // Solves the window that starts at `initial`. On success the nodes are in
   // x(i, c), the velocities D x in v(i, c) if `velocities` is set.
-  Outcome Solve(const InitialData& initial, const solvers::NewtonOptions& newton,
-                bool velocities) {
+  Outcome Solve(const InitialData& initial,
+                const solvers::NewtonOptions& newton, bool velocities) {
     Outcome o;
     State x0{}, v0{};
     for (int c = 0; c < d; ++c) {
@@ -118,8 +118,8 @@ class WindowEngine {
       }
     }
     if (order() == 2) {
-      std::string why = UnderResolution(problem_, grid_, xe[0], ve[0], xe[1],
-                                        ve[1]);
+      std::string why =
+          UnderResolution(problem_, grid_, xe[0], ve[0], xe[1], ve[1]);
       if (!why.empty()) {
         o.failure = std::move(why);
         o.split_helps = false;
@@ -152,7 +152,8 @@ class WindowEngine {
  private:
   static Grid WindowGrid(const Grid& global, long long points, int refine) {
     Grid g = global;
-    const double dt = (global.t_end - global.t_start) / double(global.points - 1);
+    const double dt =
+        (global.t_end - global.t_start) / double(global.points - 1);
     g.t_start = 0.0;
     g.t_end = dt * double(points - 1);
     g.points = (points - 1) * refine + 1;
@@ -238,9 +239,10 @@ struct Marcher {
       if (o.failure.empty()) {
         Record(t0, t1, points, o.report, depth, o.end);
         const int r = refine;
-        EmitNodes(last_of_march ? int(points) : int(points) - 1,
-                  [&](int i, int c) { return e.x(i * r, c); },
-                  [&](int i, int c) { return e.v(i * r, c); });
+        EmitNodes(
+            last_of_march ? int(points) : int(points) - 1,
+            [&](int i, int c) { return e.x(i * r, c); },
+            [&](int i, int c) { return e.v(i * r, c); });
         HandOff(initial, o.end, &e, nullptr);
         return true;
       }
@@ -251,7 +253,7 @@ struct Marcher {
           ++out.fallbacks;
           return Window(initial, t0, t1, points, depth, last_of_march);
         }
-        out.status = {false, Where(t0, t1) + o.failure};
+        Fail(t0, t1, o.failure, o.report.residual_norm);
         return false;
       }
       ++out.fallbacks;  // retried below from the default guess, then halved
@@ -264,7 +266,7 @@ struct Marcher {
     if (!s.status.converged) {
       const long long half = (points + 1) / 2;
       if (depth >= options.max_split_depth || half < min_points) {
-        out.status = {false, Where(t0, t1) + s.status.reason};
+        Fail(t0, t1, s.status.reason, s.residual_norm);
         return false;
       }
       ++out.fallbacks;
@@ -277,16 +279,21 @@ struct Marcher {
     report.iterations = s.iterations;
     Record(t0, t1, points, report, depth, s.corrected);
     const int r = refine;
-    EmitNodes(last_of_march ? int(points) : int(points) - 1,
-              [&](int i, int c) { return s.x1(i * r, c); },
-              [&](int i, int c) { return s.velocity(i * r, c); });
+    EmitNodes(
+        last_of_march ? int(points) : int(points) - 1,
+        [&](int i, int c) { return s.x1(i * r, c); },
+        [&](int i, int c) { return s.velocity(i * r, c); });
     HandOff(initial, s.corrected, nullptr, &s);
     return true;
   }
 
-  static std::string Where(double t0, double t1) {
-    return "window [" + std::to_string(t0) + ", " + std::to_string(t1) +
-           "] did not converge: ";
+  // A failed window: the march reports where, why, and the residual left.
+  void Fail(double t0, double t1, const std::string& why, double residual) {
+    out.last_residual = residual;
+    std::ostringstream s;
+    s << "window [" << t0 << ", " << t1 << "] did not converge: " << why
+      << "; last residual ‖F‖∞ = " << residual;
+    out.status = {false, s.str()};
   }
 
   void Record(double t0, double t1, long long points,
@@ -370,20 +377,22 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   constexpr int d = P::kDim;
   const auto start = std::chrono::steady_clock::now();
   // Validates the global grid (operator, points, interval) once.
-  const auto global = sbp::MakeOperator<double>(grid.op, grid.points,
-                                                grid.t_start, grid.t_end);
+  const auto global =
+      sbp::MakeOperator<double>(grid.op, grid.points, grid.t_start, grid.t_end);
   const int min_points = global.min_points();
   if (options.window_points < min_points)
     throw std::invalid_argument(
-        "window of " + std::to_string(options.window_points) + " points is "
-        "below the minimum of " + grid.op + " (" + std::to_string(min_points) +
+        "window of " + std::to_string(options.window_points) +
+        " points is "
+        "below the minimum of " +
+        grid.op + " (" + std::to_string(min_points) +
         "); use --slab-points >= " + std::to_string(min_points) +
         " or 0 for one global solve");
   MarchResult out;
   InitialData state = initial;
   const int order = detail::CheckInitialData(problem, state);
-  detail::Marcher<P> m{problem, options, grid, observer, out,
-                       min_points, order, 0, {}, {}, 1, {}};
+  detail::Marcher<P> m{problem, options, grid, observer, out, min_points,
+                       order,   0,       {},   {},       1,   {}};
   m.Refine(state, false);  // planned from the initial state, not a fallback
   const long long intervals = grid.points - 1;
   const long long per_window = options.window_points - 1;
@@ -404,7 +413,8 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
                             : "all windows converged on a grid refined x" +
                                   std::to_string(out.refinement) +
                                   " (the requested step exceeds the stability "
-                                  "limit of " + grid.op + ")"};
+                                  "limit of " +
+                                  grid.op + ")"};
   out.end_position = state.x;
   out.end_velocity = state.v;
   if (options.keep_trajectory) {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,9 @@ struct MarchOptions {
   // (damped at T = 3277: 4.9e-7 at 32, 5.8e-7 at 48).
   long long window_points = 48;
   HandOff hand_off = HandOff::kCorrected;
-  int max_split_depth = 4;   // fallback: halve a failing window up to 4 times
+  int max_split_depth = 4;  // fallback: halve a failing window up to 4 times
   bool keep_trajectory = true;  // also keeps the per-window reports
-  SolveOptions solve;        // per-window solver settings
+  SolveOptions solve;           // per-window solver settings
   // Hard cases stay stable: when Δt·ω exceeds the operator's stability limit
   // (resolution.h), solve each window on a grid refined r times (output still
   // on the requested grid) instead of failing; r is reported. Off: such a
@@ -37,7 +38,7 @@ struct WindowReport {
   long long points = 0;
   int iterations = 0;   // Jacobian factorizations (0: an earlier one reused)
   int corrections = 0;  // Newton, chord and refinement steps
-  int fallbacks = 0;  // splits needed below this window
+  int fallbacks = 0;    // splits needed below this window
   bool converged = false;
   double position_error_estimate = 0;  // |M⁻¹λ4|∞
   double velocity_error_estimate = 0;  // |(Dx)_N − M⁻¹(−λ3)|∞
@@ -55,6 +56,9 @@ struct MarchResult {
   int iterations = 0;   // Jacobian factorizations over all windows
   int corrections = 0;  // solves with a factorization over all windows
   double error_estimate = 0;  // Σ of the per-window position estimates
+  // On failure: ‖F‖∞ of the failing window's system at the last iterate
+  // (NaN if it was not finite or not evaluated); also named in the reason.
+  double last_residual = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0;
 };
 
