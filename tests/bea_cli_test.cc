@@ -15,15 +15,9 @@
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out, err;
-};
+using Run = vivp::testing::CliRun;
 
-Run Vivp(const std::string& args) {
-  const auto r = vivp::testing::RunVivp(args);
-  return {r.status, r.out, r.err};
-}
+Run Vivp(const std::string& args) { return vivp::testing::RunVivp(args); }
 
 bool Contains(const std::string& s, const std::string& part) {
   return s.find(part) != std::string::npos;
@@ -61,8 +55,9 @@ BOOST_AUTO_TEST_CASE(UnstableAlpha_WarnsWhy) {
       "bea verify --method lmm4 --alpha 0.2 --dim 2 --steps 0.1,0.05 "
       "--t-end 150 --json -");
   BOOST_TEST(v.status == 2);
-  BOOST_TEST(Contains(v.err, "verify cannot measure conservation with an "
-                             "unstable method: unstable"));
+  BOOST_TEST(Contains(v.err,
+                      "verify cannot measure conservation with an "
+                      "unstable method: unstable"));
   BOOST_TEST(Contains(v.err, "alpha <= 0"));
   BOOST_TEST(std::count(v.err.begin(), v.err.end(), '\n') == 1);
   BOOST_TEST(v.out.empty());

@@ -23,10 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int status;
-  std::string out, err;
-};
+using Run = vivp::testing::CliRun;
 
 std::string Slurp(const fs::path& p) {
   std::ifstream in(p);
@@ -42,10 +39,7 @@ struct Scratch {
   ~Scratch() { fs::remove_all(dir); }
 };
 
-Run Vivp(const std::string& args) {
-  const auto r = vivp::testing::RunVivp(args);
-  return {r.status, r.out, r.err};
-}
+Run Vivp(const std::string& args) { return vivp::testing::RunVivp(args); }
 
 std::string Scene(const std::string& name) {
   return (fs::path(VIVP_SCENES_DIR) / name).string();
