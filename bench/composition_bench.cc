@@ -43,10 +43,10 @@ int main() {
   std::printf("%-34s %10s %10s %8s %10s\n", "system", "hand [s]", "composed",
               "ratio", "max|dx|");
   Compare("kinetic + spring + damping", DampedOscillator{},
-          Composed<1>({effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
-                                 effects::Damping{0.00071}}),
+          Composed<1>{{effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
+                                 effects::Damping{0.00071}}},
           {{1.0}, {0.0}}, 204.8);
   Compare("kinetic + quartic (anharmonic)", Anharmonic{},
-          Composed<1>({effects::Kinetic{1.0, {}}, effects::Quartic{20.0}}),
+          Composed<1>{{effects::Kinetic{1.0, {}}, effects::Quartic{20.0}}},
           {{1.0}, {0.3}}, 1.0);
 }

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential clang libclang-rt-dev cmake pkg-config
   libeigen3-dev libceres-dev libgoogle-glog-dev
   libboost-dev libboost-test-dev libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev
   liblapack-dev libgnuplot-iostream-dev gnuplot-nox

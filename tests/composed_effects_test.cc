@@ -50,25 +50,25 @@ double MaxDifference(const A& a, const B& b) {
 BOOST_AUTO_TEST_CASE(EffectSums_EqualTheHandWrittenLagrangians) {
   using namespace effects;
   BOOST_TEST(MaxDifference<1>(DampedOscillator{},
-                              Composed<1>({Kinetic{0.5, {}}, Spring{1.0, {}},
-                                           Damping{0.00071}})) <= 1e-15);
+                              Composed<1>{{Kinetic{0.5, {}}, Spring{1.0, {}},
+                                           Damping{0.00071}}}) <= 1e-15);
   BOOST_TEST(
-      MaxDifference<1>(Anharmonic{}, Composed<1>({Kinetic{}, Quartic{20.0}})) <=
+      MaxDifference<1>(Anharmonic{}, Composed<1>{{Kinetic{}, Quartic{20.0}}}) <=
       1e-13);
   BOOST_TEST(MaxDifference<1>(FreeFall{},
-                              Composed<1>({Kinetic{}, Gravity{}})) <= 1e-15);
-  BOOST_TEST(MaxDifference<1>(Exponential{}, Composed<1>({Growth{2.5}})) <=
+                              Composed<1>{{Kinetic{}, Gravity{}}}) <= 1e-15);
+  BOOST_TEST(MaxDifference<1>(Exponential{}, Composed<1>{{Growth{2.5}}}) <=
              1e-15);
   BOOST_TEST(MaxDifference<1>(problems::Pendulum{},
-                              Composed<1>({Kinetic{}, effects::Pendulum{}})) <=
+                              Composed<1>{{Kinetic{}, effects::Pendulum{}}}) <=
              1e-15);
-  BOOST_TEST(MaxDifference<2>(Kepler{}, Composed<2>({Kinetic{}, Central{}})) <=
+  BOOST_TEST(MaxDifference<2>(Kepler{}, Composed<2>{{Kinetic{}, Central{}}}) <=
              1e-15);
 }
 
 BOOST_AUTO_TEST_CASE(ChainWithFixedEnds_IsTheSumOfItsBonds) {
   // Three masses between walls: bonds x0, x1 − x0, x2 − x1, x2.
-  const auto c = Composed<3>({effects::Chain{2.0, 0.5, true}});
+  const auto c = Composed<3>{{effects::Chain{2.0, 0.5, true}}};
   const double x[3] = {0.1, -0.3, 0.2}, v[3] = {0, 0, 0};
   double expected = 0;
   for (double d : {0.1, -0.4, 0.5, 0.2})
@@ -78,8 +78,8 @@ BOOST_AUTO_TEST_CASE(ChainWithFixedEnds_IsTheSumOfItsBonds) {
 
 BOOST_AUTO_TEST_CASE(ComposedDampedOscillator_SolvesLikeTheHandWrittenOne) {
   const auto composed =
-      Composed<1>({effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
-                   effects::Damping{0.00071}});
+      Composed<1>{{effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
+                   effects::Damping{0.00071}}};
   const Grid g{.op = "sbp42", .points = 2048, .t_start = 0.0, .t_end = 204.8};
   const auto a = SolveIvp(DampedOscillator{}, {{1.0}, {0.0}}, g);
   const auto b = SolveIvp(composed, {{1.0}, {0.0}}, g);
@@ -152,13 +152,13 @@ BOOST_AUTO_TEST_CASE(TermByTermDerivatives_EqualThoseOfTheWholeDensity) {
       Damping{0.3},          Growth{2.5}};
   for (const Effect& e : each2) {
     BOOST_TEST_CONTEXT("effect #" << e.index()) {
-      BOOST_TEST(TermByTermDeviation(Composed<2>({e})) <= 1e-14);
+      BOOST_TEST(TermByTermDeviation(Composed<2>{{e}}) <= 1e-14);
     }
   }
   std::vector<Effect> all(each2.begin(), each2.end());
   all.erase(all.begin());  // one kinetic term
-  BOOST_TEST(TermByTermDeviation(Composed<2>(all)) <= 1e-14);
-  BOOST_TEST(TermByTermDeviation(Composed<3>(
+  BOOST_TEST(TermByTermDeviation(Composed<2>{all}) <= 1e-14);
+  BOOST_TEST(TermByTermDeviation(Composed<3>{
                  {Kinetic{}, Chain{1.0, 1.0, true}, Central{}, Damping{0.1},
-                  Gravity{}, Spring{1.0, {0.0, 1.0, 2.0}}})) <= 1e-14);
+                  Gravity{}, Spring{1.0, {0.0, 1.0, 2.0}}}}) <= 1e-14);
 }
