@@ -43,9 +43,9 @@ std::vector<long long> ParsePoints(const std::string& list) {
                        "numbers such as 16,32,64, got '" + list + "'");
     out.push_back(v);
   }
-  if (out.size() < 2)
-    throw UsageError("--points: need at least two grid sizes to fit an order, "
-                     "got '" + list + "'");
+  if (out.empty())
+    throw UsageError("--points: expected at least one grid size, such as "
+                     "16,32,64");
   return out;
 }
 
@@ -103,8 +103,11 @@ int RunConverge(const ConvergeOptions& o) {
   }
   // An order is NaN when fewer than two errors lie above round-off (e.g.
   // free fall with SBP42, exact on parabolas): say so instead of "nan".
-  auto order = [](double v) {
-    if (std::isnan(v)) return std::string("round-off");
+  int converged = 0;
+  for (const auto& r : study.rows) converged += r.converged ? 1 : 0;
+  auto order = [&](double v) {
+    if (std::isnan(v))
+      return std::string(converged < 2 ? "n/a" : "round-off");
     std::ostringstream s;
     s << std::fixed << std::setprecision(2) << v;
     return s.str();
@@ -116,6 +119,12 @@ int RunConverge(const ConvergeOptions& o) {
   human << "fitted order (dt = 1/Nt):     " << orders(study.orders)
         << "\nfitted order (dt = 1/(Nt−1)): " << orders(study.orders_true_dt)
         << "\n";
+  if (converged < 2)
+    human << "(an order needs two converged grid sizes; " << converged
+          << " of " << study.rows.size() << " converged)\n";
+  else if (converged < int(study.rows.size()))
+    human << "(fitted over the " << converged << " converged grid sizes of "
+          << study.rows.size() << ")\n";
 
   if (!o.json.empty()) {
     nlohmann::json rows = nlohmann::json::array();

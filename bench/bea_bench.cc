@@ -116,6 +116,24 @@ int main() {
                 qg.Acceleration(4, 0.15, x, v, a);
                 return a[0] + a[1];
               }));
+  std::printf("%-44s %14.3g\n", "symplectic form omega (4x4) to h^4 (generic)",
+              rate([&](const double* x, const double* v) {
+                double w[16];
+                qg.SymplecticForm(4, 0.15, x, v, w);
+                return w[1] + w[6];
+              }));
+  {
+    DeriveOptions os;
+    os.order = 4;
+    os.model = PotentialModel::kGeneric;
+    auto rs = Derive(MakeStormerVerlet(1), os);
+    Pendulum pendulum;
+    ModifiedQuantities qs(rs, pendulum);
+    std::printf("%-44s %14.3g\n", "L_mod to h^4 (Stormer-Verlet, pendulum)",
+                rate([&](const double* x, const double* v) {
+                  return qs.Lagrangian(4, 0.15, x, v);
+                }));
+  }
   // One whole sweep point: march + velocities + H and I at every step.
   ConservationSetup s;
   s.x0 = Eigen::Vector2d(1, -1);

@@ -1,7 +1,8 @@
 // Work–precision diagrams (issue 6): final-time error against wall time
-// (median of 5 runs, log–log) for every applicable method on the anharmonic,
-// damped (variational solver only), Kepler (e = 0.6), NLDNLS and pendulum
-// problems; one PNG per problem. The variational solver's curves
+// (median of 5 runs, log–log) for every applicable method on every problem
+// of the work–precision harness (harmonic, pendulum, anharmonic, damped —
+// variational solver only —, Kepler e = 0.6 and e = 0.9, Hénon–Heiles,
+// NLDNLS); one PNG per problem. The variational solver's curves
 // (variational_sbpXX) are solid like the stepper family, the peers dashed.
 // Usage: fig_steppers_work_precision [OUTPUT_DIR] [BUDGET_SECONDS]
 #include <cstdlib>
@@ -15,7 +16,8 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const double budget = argc > 2 ? std::atof(argv[2]) : 0.1;
   for (const char* name :
-       {"anharmonic", "damped", "kepler", "nldnls", "pendulum"}) {
+       {"harmonic", "pendulum", "anharmonic", "damped", "kepler", "kepler_e09",
+        "henon_heiles", "nldnls"}) {
     const BenchProblem& p = FindBenchProblem(name);
     vivp::plot::Figure fig(dir, std::string("fig_steppers_wp_") + name);
     std::string plots;

@@ -44,7 +44,8 @@ BOOST_AUTO_TEST_CASE(CheckStability_PositiveAlpha_IsUnstableWithReason) {
   auto m = MakeLmm4(ScalarMatrix(GiNaC::numeric(1, 5), 2));
   const auto s = CheckStability(NumericCoefficients(m));
   BOOST_TEST(!s.stable);
-  BOOST_TEST(s.max_root_modulus > 1.5);  // alpha = 0.2: |zeta| = 2.2
+  // alpha = 0.2: the extra roots solve zeta^2 + 3 zeta + 1 = 0, |zeta| = 2.618.
+  BOOST_TEST(s.max_root_modulus > 1.5);
   BOOST_TEST(s.reason.find("alpha <= 0") != std::string::npos);
 }
 

@@ -191,7 +191,7 @@ BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {
   BOOST_TEST_MESSAGE("damped T = 1e4: max energy error " << max_energy_error);
   BOOST_TEST(max_energy_error <= 1e-3);  // measured 6.6e-4 (E from 0.5 to 0.0)
 
-  // Kepler e = 0.6 over 100 periods at Δt = 2π/100: energy and angular
+  // Kepler e = 0.6 over 100 periods at Δt = π/100: energy and angular
   // momentum errors stay bounded (node velocities are Dx: order 2 there).
   problems::Kepler k;
   const auto y0 = k.Initial();
@@ -240,4 +240,29 @@ BOOST_AUTO_TEST_CASE(ExtremeGrid_DampedMarchedOver2To20Points) {
   BOOST_TEST_MESSAGE("damped, Nt = 2^20 + 1 marched: corrected end error "
                      << error);
   BOOST_TEST(error <= 1e-8);  // measured 4.3e-9
+}
+
+BOOST_AUTO_TEST_CASE(FitOrders_LeaveOutRowsThatDidNotConverge) {
+  // Proves: a grid size whose solve did not converge (its "error" is that of
+  // an unconverged iterate, here 10) does not enter the fitted order; the
+  // converged rows follow C·h⁴ and give 4. With one converged row there is
+  // no order (NaN, reported as n/a by `vivp converge`).
+  ConvergenceStudy study;
+  for (long long n : {32, 64, 128, 256}) {
+    ConvergenceRow r;
+    r.points = n;
+    r.dt = r.dt_true = 1.0 / double(n);
+    r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected =
+        std::pow(r.dt, 4);
+    r.converged = n != 32;
+    if (!r.converged) r.err_x = r.err_v = r.err_x_corrected = 10;
+    study.rows.push_back(r);
+  }
+  FitOrders(study, 1e-300);
+  BOOST_TEST(study.orders.x == 4.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(study.orders.x_corrected == 4.0,
+             boost::test_tools::tolerance(1e-12));
+  study.rows.resize(2);  // 32 (not converged) and 64
+  FitOrders(study, 1e-300);
+  BOOST_TEST(std::isnan(study.orders.x));
 }

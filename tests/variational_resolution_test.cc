@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {
   const auto r = SolveIvp(s, {{1.0}, {0.0}}, g);
   BOOST_TEST(r.x1.allFinite());
   BOOST_TEST(!r.status.converged);
-  BOOST_TEST(r.status.reason.find("under-resolved: dt*omega = 10.0") !=
+  BOOST_TEST(r.status.reason.find("under-resolved: dt*omega = 10 exceeds") !=
              std::string::npos, r.status.reason);
   BOOST_TEST(r.status.reason.find("use at least 1001 points") !=
              std::string::npos, r.status.reason);

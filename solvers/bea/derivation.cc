@@ -67,7 +67,8 @@ Ostrogradsky Momenta(JetSpace& jet, const GiNaC::ex& L) {
 }  // namespace
 
 // Measured (bench/bea_bench): d = 1 reaches h^10 in 0.3 s; d = 2 costs about
-// tenfold per h^2 (general symbolic A: 0.4 s at h^4, 13 s at h^6).
+// tenfold per h^2 (general symbolic A: 0.25 s at h^4, 5.6 s at h^6 plus
+// 0.7 s of self-checks).
 int CoefficientSymbols(const Method& method) {
   GiNaC::exset symbols;
   for (const GiNaC::matrix& a : method.A)

@@ -78,10 +78,21 @@ ModifiedQuantities::ModifiedQuantities(const BeaResult& r,
   auto subs = [&](const GiNaC::ex& e) {
     return parameters.empty() ? e : GiNaC::expand(e.subs(parameters));
   };
+  const int n2 = 2 * dim_;
+  const bool with_omega = static_cast<int>(r.omega.size()) == n2;
+  // L_mod is compiled only if it is a polynomial in the variables below;
+  // otherwise Lagrangian() reports why.
+  bool with_lagrangian = r.modified_lagrangian.has_value();
+  if (!with_lagrangian)
+    no_lagrangian_ = "the derivation has no first-order modified Lagrangian";
   for (int p = 0; p <= order_; ++p) {
     all.push_back(subs(r.hamiltonian[p]));
     if (r.charge) all.push_back(subs((*r.charge)[p]));
     for (int i = 0; i < dim_; ++i) all.push_back(subs(r.f[i][p]));
+    if (with_omega)
+      for (int i = 0; i < n2; ++i)
+        for (int j = 0; j < n2; ++j) all.push_back(subs(r.omega[i][j][p]));
+    if (with_lagrangian) all.push_back(subs((*r.modified_lagrangian)[p]));
   }
   for (int i = 0; i < dim_; ++i) vars_.push_back(r.jet->X(i, 0));
   for (int i = 0; i < dim_; ++i) vars_.push_back(r.jet->X(i, 1));
@@ -105,10 +116,26 @@ ModifiedQuantities::ModifiedQuantities(const BeaResult& r,
     stride_ = std::max(stride_, out.back().max_exponent() + 1);
   };
   f_.resize(dim_);
+  if (with_omega) omega_.resize(n2 * n2);
+  bool lagrangian_ok = true;
   for (int p = 0; p <= order_; ++p) {
     compile(hamiltonian_);
     if (r.charge) compile(charge_);
     for (int i = 0; i < dim_; ++i) compile(f_[i]);
+    for (auto& w : omega_) compile(w);
+    if (with_lagrangian) {
+      if (!lagrangian_ok) {
+        ++k;  // this order's L_mod term, not compiled
+        continue;
+      }
+      try {
+        compile(lagrangian_);  // consumes all[k] even when it throws
+      } catch (const std::invalid_argument& e) {
+        lagrangian_ok = false;
+        lagrangian_.clear();
+        no_lagrangian_ = std::string("L_mod is not a polynomial: ") + e.what();
+      }
+    }
   }
   powers_.resize(vars_.size() * stride_);
 }
@@ -156,6 +183,20 @@ double ModifiedQuantities::Charge(int k, double h, const double* x,
 void ModifiedQuantities::Acceleration(int k, double h, const double* x,
                                       const double* v, double* a) const {
   for (int i = 0; i < dim_; ++i) a[i] = Sum(f_[i], k, h, x, v);
+}
+
+void ModifiedQuantities::SymplecticForm(int k, double h, const double* x,
+                                        const double* v, double* omega) const {
+  if (omega_.empty())
+    throw std::logic_error("the derivation computed no symplectic form");
+  for (std::size_t e = 0; e < omega_.size(); ++e)
+    omega[e] = Sum(omega_[e], k, h, x, v);
+}
+
+double ModifiedQuantities::Lagrangian(int k, double h, const double* x,
+                                      const double* v) const {
+  if (lagrangian_.empty()) throw std::logic_error(no_lagrangian_);
+  return Sum(lagrangian_, k, h, x, v);
 }
 
 }  // namespace vivp::bea

@@ -42,11 +42,13 @@ struct ConvergenceStudy {
   ConvergenceOrders orders_true_dt;  // against 1/(Nt − 1)
 };
 
-// Fits the orders of the rows; errors at or below `floor` are round-off and
-// left out of the fit.
+// Fits the orders of the converged rows (a solve that did not converge has
+// no discretization error to speak of); errors at or below `floor` are
+// round-off and left out of the fit. Fewer than two usable rows give NaN.
 inline void FitOrders(ConvergenceStudy& study, double floor) {
   std::vector<double> h, ht, ex, ev, exc, epc;
   for (const auto& r : study.rows) {
+    if (!r.converged) continue;
     h.push_back(r.dt);
     ht.push_back(r.dt_true);
     ex.push_back(r.err_x);

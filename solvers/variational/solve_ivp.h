@@ -25,6 +25,9 @@
 //     in plain double.
 #pragma once
 
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 #include <string>
@@ -150,24 +153,41 @@ IvpSolution<Real> Finish(const P& problem,
 }
 
 // Why the grid is too coarse for the problem, or "" if it is not: Δt·ω at
-// the two given states (x, v per DOF) must stay below the operator's
-// stability limit (resolution.h).
+// the two given states (x, v per DOF; a window's or the solve's first and
+// last node) must stay below the operator's stability limit (resolution.h).
+// The advice is based on ω at the first state: at the last one ω may come
+// from a solution that has already grown without bound, and the point count
+// it implies is meaningless (a quartic potential's ω grows with |x|).
 template <class P>
 std::string UnderResolution(const P& problem, const Grid& grid,
                             const double* xa, const double* va,
                             const double* xb, const double* vb) {
   const double dt = (grid.t_end - grid.t_start) / double(grid.points - 1);
-  const double omega = std::max(FastestFrequency(problem, xa, va),
-                                FastestFrequency(problem, xb, vb));
+  const double omega_a = FastestFrequency(problem, xa, va);
+  const double omega_b = FastestFrequency(problem, xb, vb);
   const double limit = StabilityLimit(grid.op);
-  if (dt * omega <= limit) return "";
-  const long long needed =
-      static_cast<long long>(std::ceil((grid.t_end - grid.t_start) * omega /
-                                       limit)) + 1;
-  return "under-resolved: dt*omega = " + std::to_string(dt * omega) +
-         " exceeds the stability limit " + std::to_string(limit) + " of " +
-         grid.op + " (the discrete solution grows without bound); use at "
-         "least " + std::to_string(needed) + " points";
+  const double worst = dt * std::max(omega_a, omega_b);
+  if (!(worst > limit)) return "";
+  auto number = [](double v) {
+    std::ostringstream o;
+    o << std::setprecision(3) << v;
+    return o.str();
+  };
+  std::string why = "under-resolved: dt*omega = " + number(worst) +
+                    " exceeds the stability limit " + number(limit) + " of " +
+                    grid.op + " (the discrete solution grows without bound); ";
+  if (dt * omega_a > limit) {
+    const double needed =
+        std::ceil((grid.t_end - grid.t_start) * omega_a / limit) + 1;
+    return why + "use at least " +
+           (needed < 1e15 ? std::to_string(static_cast<long long>(needed))
+                          : number(needed)) +
+           " points";
+  }
+  return why + "dt*omega is " + number(dt * omega_a) +
+         " at the start, so the solution grew on the way; use more points "
+         "(at least " + std::to_string(2 * (grid.points - 1) + 1) +
+         ") and check that the end state stays bounded";
 }
 
 // Marks a converged solve as not converged when the grid is under-resolved.
