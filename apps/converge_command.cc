@@ -39,13 +39,16 @@ std::vector<long long> ParsePoints(const std::string& list) {
       used = 0;
     }
     if (used != item.size() || item.empty())
-      throw UsageError("--points: expected a comma-separated list of whole "
-                       "numbers such as 16,32,64, got '" + list + "'");
+      throw UsageError(
+          "--points: expected a comma-separated list of whole "
+          "numbers such as 16,32,64, got '" +
+          list + "'");
     out.push_back(v);
   }
   if (out.empty())
-    throw UsageError("--points: expected at least one grid size, such as "
-                     "16,32,64");
+    throw UsageError(
+        "--points: expected at least one grid size, such as "
+        "16,32,64");
   return out;
 }
 
@@ -106,8 +109,7 @@ int RunConverge(const ConvergeOptions& o) {
   int converged = 0;
   for (const auto& r : study.rows) converged += r.converged ? 1 : 0;
   auto order = [&](double v) {
-    if (std::isnan(v))
-      return std::string(converged < 2 ? "n/a" : "round-off");
+    if (std::isnan(v)) return std::string(converged < 2 ? "n/a" : "round-off");
     std::ostringstream s;
     s << std::fixed << std::setprecision(2) << v;
     return s.str();
@@ -120,8 +122,8 @@ int RunConverge(const ConvergeOptions& o) {
         << "\nfitted order (dt = 1/(Nt−1)): " << orders(study.orders_true_dt)
         << "\n";
   if (converged < 2)
-    human << "(an order needs two converged grid sizes; " << converged
-          << " of " << study.rows.size() << " converged)\n";
+    human << "(an order needs two converged grid sizes; " << converged << " of "
+          << study.rows.size() << " converged)\n";
   else if (converged < int(study.rows.size()))
     human << "(fitted over the " << converged << " converged grid sizes of "
           << study.rows.size() << ")\n";
@@ -142,14 +144,15 @@ int RunConverge(const ConvergeOptions& o) {
                       {"seconds", r.seconds},
                       {"converged", r.converged},
                       {"status", r.reason}});
-    const nlohmann::json j = {{"problem", problem.name},
-                              {"operator", o.op},
-                              {"solver", o.solver},
-                              {"t_end", o.t_end},
-                              {"slab_points", o.slab_points},
-                              {"rows", rows},
-                              {"orders", OrdersJson(study.orders)},
-                              {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
+    const nlohmann::json j = {
+        {"problem", problem.name},
+        {"operator", o.op},
+        {"solver", o.solver},
+        {"t_end", o.t_end},
+        {"slab_points", o.slab_points},
+        {"rows", rows},
+        {"orders", OrdersJson(study.orders)},
+        {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
     if (o.json == "-") {
       std::cout << j.dump(1) << "\n";
     } else {

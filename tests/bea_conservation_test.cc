@@ -105,8 +105,7 @@ BOOST_AUTO_TEST_CASE(CompiledOmegaAndModifiedLagrangian_AgreeWithGiNaC) {
   GiNaC::symbol hs("h");
   values[hs] = h;
   auto reference = [&](const Series& s) {
-    return GiNaC::ex_to<GiNaC::numeric>(
-               GiNaC::evalf(s.ToEx(hs).subs(values)))
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(s.ToEx(hs).subs(values)))
         .to_double();
   };
   const double eps = std::numeric_limits<double>::epsilon();
@@ -118,9 +117,9 @@ BOOST_AUTO_TEST_CASE(CompiledOmegaAndModifiedLagrangian_AgreeWithGiNaC) {
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) {
       const double w = reference(r.omega[i][j]);
-      BOOST_TEST(std::abs(omega[2 * i + j] - w) <= 64 * eps * (1 + std::abs(w)),
-                 "omega(" << i << "," << j << ") " << omega[2 * i + j]
-                          << " vs " << w);
+      BOOST_TEST(
+          std::abs(omega[2 * i + j] - w) <= 64 * eps * (1 + std::abs(w)),
+          "omega(" << i << "," << j << ") " << omega[2 * i + j] << " vs " << w);
     }
   // ω_0 = [[0, −1], [1, 0]]·(mass 1): the h-free part is the canonical form.
   q.SymplecticForm(0, h, x, v, omega);

@@ -38,8 +38,8 @@ class CompiledPolynomial {
 // Every modified quantity of a BeaResult, compiled for one concrete
 // potential: H_mod, the charge, the symplectic form ω on (x, x') and the
 // modified Lagrangian (where the derivation has one), each truncated at
-// h^0, h^2, ..., and the modified equation. Parameters left symbolic in the derivation must be
-// given numeric values in `parameters`.
+// h^0, h^2, ..., and the modified equation. Parameters left symbolic in the
+// derivation must be given numeric values in `parameters`.
 class ModifiedQuantities {
  public:
   ModifiedQuantities(const BeaResult& r, const NumericPotential& potential,

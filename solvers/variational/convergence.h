@@ -20,7 +20,7 @@ struct ConvergenceRow {
   double dt = 0;       // (t_end − t_start)/Nt, the paper's convention
   double dt_true = 0;  // (t_end − t_start)/(Nt − 1)
   double err_x = 0;    // |x_N − x(T)|∞
-  double err_v = 0;    // |(Dx)_N − ẋ(T)|∞ (first order: |(Dx)_N − ẋ(T)| too)
+  double err_v = 0;  // |(Dx)_N − ẋ(T)|∞ (first order: |(Dx)_N − ẋ(T)| too)
   double err_x_corrected = 0;  // |x_N + M⁻¹λ4 − x(T)|∞
   double err_p_corrected = 0;  // |−λ3 − p(T)|∞ (NaN for first order;
                                // marching: error of the handed-off velocity)

@@ -29,8 +29,8 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/action/full_system.h"
@@ -186,7 +186,8 @@ std::string UnderResolution(const P& problem, const Grid& grid,
   }
   return why + "dt*omega is " + number(dt * omega_a) +
          " at the start, so the solution grew on the way; use more points "
-         "(at least " + std::to_string(2 * (grid.points - 1) + 1) +
+         "(at least " +
+         std::to_string(2 * (grid.points - 1) + 1) +
          ") and check that the end state stays bounded";
 }
 
@@ -266,13 +267,13 @@ struct Prepared {
     }
     const int n = D.points();
     if (!options.guess.empty() && options.guess.size() != std::size_t(n) * d)
-      throw std::invalid_argument("initial guess has " +
-                                  std::to_string(options.guess.size()) +
-                                  " values; need points x dof = " +
-                                  std::to_string(n * d));
+      throw std::invalid_argument(
+          "initial guess has " + std::to_string(options.guess.size()) +
+          " values; need points x dof = " + std::to_string(n * d));
     for (double g : options.guess)
       if (!std::isfinite(g))
-        throw std::invalid_argument("initial guess contains a non-finite value");
+        throw std::invalid_argument(
+            "initial guess contains a non-finite value");
     // Default guess: the initial data continued linearly.
     guess.resize(std::size_t(n) * d);
     for (int i = 0; i < n; ++i)
@@ -314,8 +315,7 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
       // The same reduced system in long double, used only for residuals.
       const auto d_ext = sbp::MakeOperator<long double>(
           grid.op, grid.points, grid.t_start, grid.t_end);
-      const sbp::RegularizedOperator<long double> dbar_ext(d_ext,
-                                                           grid.sigma0);
+      const sbp::RegularizedOperator<long double> dbar_ext(d_ext, grid.sigma0);
       std::array<long double, d> x0e, v0e;
       for (int c = 0; c < d; ++c) {
         x0e[c] = initial.x[c];
@@ -324,12 +324,14 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
       const action::ReducedSystem<P, long double> ext(problem, dbar_ext, x0e,
                                                       v0e, prep.order);
       std::vector<long double> ye(reduced.size()), fe(reduced.size());
-      report = solvers::Newton<Real>(
-          reduced, y, options.newton, [&](const Real* yy, Real* ff) {
-            for (int k = 0; k < reduced.size(); ++k) ye[k] = yy[k];
-            ext.Residual(ye.data(), fe.data());
-            for (int k = 0; k < reduced.size(); ++k) ff[k] = Real(fe[k]);
-          });
+      report = solvers::Newton<Real>(reduced, y, options.newton,
+                                     [&](const Real* yy, Real* ff) {
+                                       for (int k = 0; k < reduced.size(); ++k)
+                                         ye[k] = yy[k];
+                                       ext.Residual(ye.data(), fe.data());
+                                       for (int k = 0; k < reduced.size(); ++k)
+                                         ff[k] = Real(fe[k]);
+                                     });
     } else {
       report = solvers::Newton(reduced, y, options.newton);
     }
