@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> names;
   for (int i = 2; i < argc; ++i) names.push_back(argv[i]);
   if (names.empty())
-    names = {"anharmonic", "damped", "kepler", "nldnls", "pendulum",
-             "henon_heiles"};
+    names = {"anharmonic", "damped",   "kepler",
+             "nldnls",     "pendulum", "henon_heiles"};
   std::printf(
       "# What accuracy costs in time: work–precision, median of 5 runs,"
       " sweeps stop after a run slower than %.2f s\n",
@@ -122,8 +122,9 @@ int main(int argc, char** argv) {
   std::vector<Cheapest> results;
   for (const auto& n : names)
     results.push_back(Table(FindBenchProblem(n), budget));
-  std::printf("\n# Markdown: cheapest configuration per method and target"
-              " (\"—\": not reached within the budget)\n");
+  std::printf(
+      "\n# Markdown: cheapest configuration per method and target"
+      " (\"—\": not reached within the budget)\n");
   for (std::size_t i = 0; i < names.size(); ++i)
     Markdown(FindBenchProblem(names[i]), results[i]);
 }
