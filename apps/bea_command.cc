@@ -267,9 +267,10 @@ int RunVerify(BeaOptions o) {
   // blow-up of the parasitic root, ending in overflow.
   const auto stability = bea::CheckStability(coefficients);
   if (!stability.stable)
-    throw UsageError("verify cannot measure conservation with an unstable "
-                     "method: " +
-                     stability.reason);
+    throw UsageError(
+        "verify cannot measure conservation with an unstable "
+        "method: " +
+        stability.reason);
   if (o.potential.empty()) o.potential = o.dim == 1 ? "pendulum" : "gaussian";
   const bool radial =
       o.dim == 2 && o.matrix.empty() && o.potential == "gaussian";

@@ -33,8 +33,7 @@ CLI::Validator FiniteNumber() {
         const double v = std::strtod(s.c_str(), &end);
         if (s.empty() || end != s.c_str() + s.size())
           return "expected a finite number, got '" + s + "'";
-        if (!std::isfinite(v))
-          return "must be finite, got '" + s + "'";
+        if (!std::isfinite(v)) return "must be finite, got '" + s + "'";
         return {};
       },
       "FINITE", "FiniteNumber");
@@ -44,7 +43,8 @@ CLI::Validator WholeNumberAtLeast(long long minimum, const std::string& hint) {
   return CLI::Validator(
       [minimum, hint](std::string& s) -> std::string {
         long long v = 0;
-        const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        const auto [ptr, ec] =
+            std::from_chars(s.data(), s.data() + s.size(), v);
         if (ec != std::errc() || ptr != s.data() + s.size())
           return "expected a whole number " + hint + ", got '" + s + "'";
         if (v < minimum) return "must be " + hint + ", got " + s;

@@ -33,8 +33,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "vivp: error: " << e.what()
-              << " (see 'vivp --help')\n";
+    std::cerr << "vivp: error: " << e.what() << " (see 'vivp --help')\n";
     return 2;
   }
   try {

@@ -20,12 +20,14 @@ namespace {
 template <class A, class B>
 void Compare(const char* name, const A& hand, const B& composed,
              const InitialData& init, double t_end) {
-  const Grid g{.op = "sbp42", .points = 1 << 16, .t_start = 0.0, .t_end = t_end};
+  const Grid g{
+      .op = "sbp42", .points = 1 << 16, .t_start = 0.0, .t_end = t_end};
   IvpSolution<double> a, b;
   std::vector<double> ta, tb;
   for (int r = 0; r < 7; ++r) {
     ta.push_back(bench::MedianSeconds([&] { a = SolveIvp(hand, init, g); }, 1));
-    tb.push_back(bench::MedianSeconds([&] { b = SolveIvp(composed, init, g); }, 1));
+    tb.push_back(
+        bench::MedianSeconds([&] { b = SolveIvp(composed, init, g); }, 1));
   }
   std::nth_element(ta.begin(), ta.begin() + 3, ta.end());
   std::nth_element(tb.begin(), tb.begin() + 3, tb.end());
@@ -38,13 +40,14 @@ void Compare(const char* name, const A& hand, const B& composed,
 }  // namespace
 
 int main() {
-  std::printf("# composed effects vs hand-written functor: reduced Newton, SBP42, "
-              "Nt = 2^16, median of 7\n");
+  std::printf(
+      "# composed effects vs hand-written functor: reduced Newton, SBP42, "
+      "Nt = 2^16, median of 7\n");
   std::printf("%-34s %10s %10s %8s %10s\n", "system", "hand [s]", "composed",
               "ratio", "max|dx|");
   Compare("kinetic + spring + damping", DampedOscillator{},
           Composed<1>{{effects::Kinetic{0.5, {}}, effects::Spring{1.0, {}},
-                                 effects::Damping{0.00071}}},
+                       effects::Damping{0.00071}}},
           {{1.0}, {0.0}}, 204.8);
   Compare("kinetic + quartic (anharmonic)", Anharmonic{},
           Composed<1>{{effects::Kinetic{1.0, {}}, effects::Quartic{20.0}}},

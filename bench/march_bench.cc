@@ -79,8 +79,8 @@ Sample March(const NamedProblem& p, const Grid& g, long long window,
                                         const double*) { sink += x[0]; };
   MarchResult m;
   Sample s;
-  s.seconds = bench::MedianSeconds([&] { m = p.march(g, o, observer); },
-                                   repeats);
+  s.seconds =
+      bench::MedianSeconds([&] { m = p.march(g, o, observer); }, repeats);
   bench::DoNotOptimize(sink);
   s.converged = m.status.converged;
   s.error = std::abs(m.end_position[0] - p.exact(g.t_end).x[0]);
@@ -109,13 +109,15 @@ constexpr Case kCases[] = {{"damped", 0.0125}, {"anharmonic", 0.0024}};
 
 void WindowTable() {
   const long long n = 1 << 18;
-  std::printf("# marching, SBP42, Nt = 2^18: window length (median of 3 runs)\n");
+  std::printf(
+      "# marching, SBP42, Nt = 2^18: window length (median of 3 runs)\n");
   std::printf("%-10s %6s %12s %10s %6s %9s\n", "problem", "W", "points/s",
               "err x(T)", "fact.", "fallbacks");
   for (const Case& c : kCases) {
     const NamedProblem& p = FindProblem(c.name);
     for (long long w : {16, 24, 32, 48, 64, 128, 256}) {
-      const Sample s = InChild([&] { return March(p, FixedStep(n, c.dt), w, 3); });
+      const Sample s =
+          InChild([&] { return March(p, FixedStep(n, c.dt), w, 3); });
       std::printf("%-10s %6lld %12.3e %10.2e %6d %9d%s\n", c.name, w,
                   double(n) / s.seconds, s.error, s.factorizations, s.fallbacks,
                   s.converged ? "" : "  NOT CONVERGED");
@@ -137,8 +139,8 @@ void ThroughputTable() {
     for (long long n = 1 << 10; n <= (1 << 22); n *= 4) {
       const Grid g = FixedStep(n, c.dt);
       const int repeats = n <= (1 << 16) ? 5 : 3;
-      const Sample m =
-          InChild([&] { return March(p, g, MarchOptions{}.window_points, repeats); });
+      const Sample m = InChild(
+          [&] { return March(p, g, MarchOptions{}.window_points, repeats); });
       std::printf("%-10s %9lld %10.1f | %12.3e %10.2e %9.1f | ", c.name, n,
                   g.t_end, double(n) / m.seconds, m.error, m.rss_kb / 1024.0);
       // The global solve holds every point: up to 2^20 for the linear
@@ -149,7 +151,8 @@ void ThroughputTable() {
         std::fflush(stdout);
         continue;
       }
-      const Sample s = InChild([&] { return Global(p, g, n <= (1 << 16) ? 3 : 1); });
+      const Sample s =
+          InChild([&] { return Global(p, g, n <= (1 << 16) ? 3 : 1); });
       std::printf("%12.3e %10.2e %9.1f%s\n", double(n) / s.seconds, s.error,
                   s.rss_kb / 1024.0, s.converged ? "" : "  NOT CONVERGED");
       std::fflush(stdout);

@@ -96,13 +96,14 @@ int main() {
       sink += f.v[1].v[1];
     }
   });
-  std::printf("# pointwise AD of the damped density (4 variables), ns per node, "
-              "median of 5 runs over 2^20 nodes\n");
-  std::printf("%-28s %12s %12s %8s\n", "derivative", "AutoDiffScalar", "ceres::Jet",
-              "ratio");
-  std::printf("%-28s %12.1f %12.1f %8.2f\n", "gradient (residual)", adiff1, jet1,
-              adiff1 / jet1);
-  std::printf("%-28s %12.1f %12.1f %8.2f\n", "Hessian (Newton Jacobian)", adiff2,
-              jet2, adiff2 / jet2);
+  std::printf(
+      "# pointwise AD of the damped density (4 variables), ns per node, "
+      "median of 5 runs over 2^20 nodes\n");
+  std::printf("%-28s %12s %12s %8s\n", "derivative", "AutoDiffScalar",
+              "ceres::Jet", "ratio");
+  std::printf("%-28s %12.1f %12.1f %8.2f\n", "gradient (residual)", adiff1,
+              jet1, adiff1 / jet1);
+  std::printf("%-28s %12.1f %12.1f %8.2f\n", "Hessian (Newton Jacobian)",
+              adiff2, jet2, adiff2 / jet2);
   std::printf("# (checksum %g)\n", sink);
 }

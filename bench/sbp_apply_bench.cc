@@ -42,8 +42,9 @@ int main() {
             },
             repeats);
       }
-      std::printf("%-7s %10ld %12.2f %12.2f %14.2f\n", std::string(name).c_str(),
-                  n, 1e9 * t_apply / n, 1e9 * t_transpose / n, 1e9 * t_jet / n);
+      std::printf("%-7s %10ld %12.2f %12.2f %14.2f\n",
+                  std::string(name).c_str(), n, 1e9 * t_apply / n,
+                  1e9 * t_transpose / n, 1e9 * t_jet / n);
     }
   }
 }

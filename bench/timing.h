@@ -14,9 +14,9 @@ double MedianSeconds(F&& run, int repeats = 7) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     run();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                              start)
-                    .count());
+    t.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count());
   }
   std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
   return t[repeats / 2];

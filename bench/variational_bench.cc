@@ -17,9 +17,10 @@ namespace {
 void PathTable() {
   const NamedProblem& p = FindProblem("anharmonic");
   const double exact = p.exact(1.0).x[0];
-  std::printf("# anharmonic, SBP42, t in [0, 1]: the three paths (median of 3 runs)\n");
-  std::printf("%-12s %9s %5s %10s %10s %10s %s\n", "path", "Nt", "it", "seconds",
-              "err x_N", "|grad S|", "status");
+  std::printf(
+      "# anharmonic, SBP42, t in [0, 1]: the three paths (median of 3 runs)\n");
+  std::printf("%-12s %9s %5s %10s %10s %10s %s\n", "path", "Nt", "it",
+              "seconds", "err x_N", "|grad S|", "status");
   for (Path path : {Path::kReducedNewton, Path::kFullNewton, Path::kCeresLm}) {
     for (long long n = 32; n <= (1 << 20); n *= 2) {
       Grid g;
@@ -29,19 +30,22 @@ void PathTable() {
       o.path = path;
       IvpSolution<double> s;
       const int repeats = n <= (1 << 14) ? 3 : 1;
-      const double t = bench::MedianSeconds([&] { s = p.solve(g, o); }, repeats);
-      std::printf("%-12s %9lld %5d %10.4f %10.2e %10.2e %s\n", PathName(path), n,
-                  s.iterations, t, std::abs(s.x1(n - 1, 0) - exact),
-                  s.gradient_norm, s.status.converged ? "converged" : "NOT CONVERGED");
+      const double t =
+          bench::MedianSeconds([&] { s = p.solve(g, o); }, repeats);
+      std::printf("%-12s %9lld %5d %10.4f %10.2e %10.2e %s\n", PathName(path),
+                  n, s.iterations, t, std::abs(s.x1(n - 1, 0) - exact),
+                  s.gradient_norm,
+                  s.status.converged ? "converged" : "NOT CONVERGED");
       if (!s.status.converged || t > 20) break;  // LM stalls; stop that path
     }
   }
 }
 
 void LinearCost() {
-  std::printf("\n# reduced Newton, SBP42: cost against Nt (median of 5 runs)\n");
-  std::printf("%-10s %9s %5s %10s %12s %14s\n", "problem", "Nt", "it", "seconds",
-              "s/iteration", "t/t(2^16)");
+  std::printf(
+      "\n# reduced Newton, SBP42: cost against Nt (median of 5 runs)\n");
+  std::printf("%-10s %9s %5s %10s %12s %14s\n", "problem", "Nt", "it",
+              "seconds", "s/iteration", "t/t(2^16)");
   for (const char* name : {"damped", "anharmonic"}) {
     const NamedProblem& p = FindProblem(name);
     double t16 = 0;

@@ -11,7 +11,7 @@
 namespace vivp {
 
 struct PowerLawFit {
-  double order = std::numeric_limits<double>::quiet_NaN();  // slope p
+  double order = std::numeric_limits<double>::quiet_NaN();      // slope p
   double prefactor = std::numeric_limits<double>::quiet_NaN();  // C in C·h^p
   int points_used = 0;
 };
@@ -24,7 +24,8 @@ inline PowerLawFit FitPowerLaw(std::span<const double> h,
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
   for (std::size_t i = 0; i < h.size() && i < error.size(); ++i) {
-    if (!(error[i] > floor) || !std::isfinite(error[i]) || !(h[i] > 0)) continue;
+    if (!(error[i] > floor) || !std::isfinite(error[i]) || !(h[i] > 0))
+      continue;
     const double x = std::log(h[i]), y = std::log(error[i]);
     sx += x;
     sy += y;

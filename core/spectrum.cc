@@ -70,7 +70,8 @@ Spectrum AnalyzeSpectrum(const Eigen::MatrixXd& a) {
               return std::arg(x) < std::arg(y);
             });
 
-  Eigen::BDCSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(a,
+                                     Eigen::ComputeFullU | Eigen::ComputeFullV);
   out.singular_values = svd.singularValues();
   out.zero = AnalyzeZeroEigenvalue(a);
   const Eigen::Index n = a.rows();

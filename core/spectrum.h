@@ -18,8 +18,8 @@
 namespace vivp {
 
 struct ZeroEigenvalueStructure {
-  int geometric_multiplicity = 0;  // dim ker(A)
-  int algebraic_multiplicity = 0;  // dim ker(A^k) once it stops growing
+  int geometric_multiplicity = 0;      // dim ker(A)
+  int algebraic_multiplicity = 0;      // dim ker(A^k) once it stops growing
   std::vector<int> kernel_dimensions;  // dim ker(A^k), k = 1, 2, ...
   double tolerance = 0;  // singular values <= tolerance count as zero
 };

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   const vivp::sbp::RegularizedOperator<double> dbar(d, -1.0);
   const vivp::Spectrum sd = vivp::AnalyzeSpectrum(d.DenseD());
   const vivp::Spectrum sdbar = vivp::AnalyzeSpectrum(dbar.AffineMatrix(1.0));
-  std::cout << vivp::figures::SpectrumFigure(sd, sdbar, "SBP21", 32, dir).string()
-            << "\n";
+  std::cout
+      << vivp::figures::SpectrumFigure(sd, sdbar, "SBP21", 32, dir).string()
+      << "\n";
 }

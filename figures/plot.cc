@@ -1,7 +1,8 @@
 #include "figures/plot.h"
 
-#include <fstream>
 #include <gnuplot-iostream.h>
+
+#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <stdexcept>
@@ -11,7 +12,9 @@ namespace vivp::plot {
 namespace fs = std::filesystem;
 
 Figure::Figure(fs::path dir, std::string stem, int width, int height)
-    : dir_(std::move(dir)), stem_(std::move(stem)), width_(width),
+    : dir_(std::move(dir)),
+      stem_(std::move(stem)),
+      width_(width),
       height_(height) {
   fs::create_directories(dir_);
 }
@@ -24,7 +27,8 @@ std::string Figure::Data(const std::string& name,
   out << "# " << columns << "\n"
       << std::setprecision(std::numeric_limits<double>::max_digits10);
   for (const auto& row : rows) {
-    for (std::size_t j = 0; j < row.size(); ++j) out << (j ? " " : "") << row[j];
+    for (std::size_t j = 0; j < row.size(); ++j)
+      out << (j ? " " : "") << row[j];
     out << "\n";
   }
   if (!out) throw std::runtime_error("cannot write " + (dir_ / file).string());

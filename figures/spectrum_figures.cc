@@ -31,8 +31,8 @@ std::filesystem::path NullVectorFigure(const Spectrum& d,
   plot::Figure fig(dir, "fig03_null_vectors");
   const auto right = fig.Data("right", IndexRows(d.right_null_vector), "i v");
   const auto left = fig.Data("left", IndexRows(d.left_null_vector), "i v");
-  fig.script() << "set title 'Null vectors of D (" << op_name << ", N_t = "
-               << points << ")'\n"
+  fig.script() << "set title 'Null vectors of D (" << op_name
+               << ", N_t = " << points << ")'\n"
                << "set xlabel 'node i'\nset ylabel 'component (unit norm)'\n"
                << "set key outside top center horizontal\nset grid\n"
                << "plot '" << right
@@ -49,7 +49,8 @@ std::filesystem::path SpectrumFigure(const Spectrum& d, const Spectrum& dbar,
                                      const std::filesystem::path& dir) {
   plot::Figure fig(dir, "fig04_spectrum", 1200, 600);
   const auto dfile = fig.Data("D", ComplexRows(d.eigenvalues), "re im");
-  const auto dbarfile = fig.Data("Dbar", ComplexRows(dbar.eigenvalues), "re im");
+  const auto dbarfile =
+      fig.Data("Dbar", ComplexRows(dbar.eigenvalues), "re im");
   // The inset spans the cluster of the algebraic_multiplicity smallest
   // eigenvalues of D (the split zero eigenvalue).
   double radius = 0;

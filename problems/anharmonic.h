@@ -28,7 +28,9 @@ struct Anharmonic {
     return T(0.5) * p[0] * p[0] + T(0.25 * kappa) * q[0] * q[0] * q[0] * q[0];
   }
 
-  double Energy() const { return 0.5 * v0 * v0 + 0.25 * kappa * std::pow(x0, 4); }
+  double Energy() const {
+    return 0.5 * v0 * v0 + 0.25 * kappa * std::pow(x0, 4);
+  }
 
   // Exact solution x(t) = A cn(ω (t − t0) | k² = ½), A = (4E/κ)^¼, ω = A√κ
   // (x = A cn(ωt) solves x'' = −κx³ exactly when k² = ½). The phase u0 = −ω t0

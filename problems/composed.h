@@ -24,11 +24,10 @@
 
 namespace vivp::problems {
 
-using Effect =
-    std::variant<effects::Kinetic, effects::Gravity, effects::Spring,
-                 effects::Quartic, effects::Pendulum, effects::Central,
-                 effects::GaussianWell, effects::Chain, effects::Damping,
-                 effects::Growth>;
+using Effect = std::variant<effects::Kinetic, effects::Gravity, effects::Spring,
+                            effects::Quartic, effects::Pendulum,
+                            effects::Central, effects::GaussianWell,
+                            effects::Chain, effects::Damping, effects::Growth>;
 
 template <class E>
 concept HasLagrangian = requires(const E& e, const double* p) {
@@ -41,9 +40,8 @@ concept HasLambdaTerm = requires(const E& e, const double* p) {
 
 // Does this effect contribute to Λ?
 inline bool IsDissipative(const Effect& e) {
-  return std::visit(
-      [](const auto& t) { return HasLambdaTerm<decltype(t)>; },
-      e);
+  return std::visit([](const auto& t) { return HasLambdaTerm<decltype(t)>; },
+                    e);
 }
 
 template <int D>

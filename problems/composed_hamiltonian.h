@@ -33,15 +33,15 @@ class ComposedHamiltonian {
     bool kinetic = false;
     for (const Effect& e : effects) {
       if (IsDissipative(e))
-        throw std::invalid_argument(
-            "a dissipative effect has no Hamiltonian");
+        throw std::invalid_argument("a dissipative effect has no Hamiltonian");
       if (const auto* k = std::get_if<effects::Kinetic>(&e)) {
         kinetic = true;
         if (k->matrix.empty())
           mass += k->mass * Eigen::Matrix<double, D, D>::Identity();
         else
-          mass += Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(
-              k->matrix.data());
+          mass +=
+              Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>(
+                  k->matrix.data());
         continue;
       }
       potentials_.push_back(e);

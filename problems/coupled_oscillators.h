@@ -35,7 +35,8 @@ struct CoupledOscillators {
     double yp, wp, ym, wm;
     mode(std::sqrt(k), x0[0] + x0[1], v0[0] + v0[1], yp, wp);
     mode(std::sqrt(k + 2 * c), x0[0] - x0[1], v0[0] - v0[1], ym, wm);
-    return {{0.5 * (yp + ym), 0.5 * (yp - ym)}, {0.5 * (wp + wm), 0.5 * (wp - wm)}};
+    return {{0.5 * (yp + ym), 0.5 * (yp - ym)},
+            {0.5 * (wp + wm), 0.5 * (wp - wm)}};
   }
 };
 

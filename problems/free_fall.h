@@ -22,7 +22,9 @@ struct FreeFall {
   struct State {
     double x, v;
   };
-  State Exact(double t) const { return {x0 + v0 * t - 0.5 * g * t * t, v0 - g * t}; }
+  State Exact(double t) const {
+    return {x0 + v0 * t - 0.5 * g * t * t, v0 - g * t};
+  }
 };
 
 }  // namespace vivp::problems

@@ -2,9 +2,8 @@
 // failure one degree higher), quadrature, stencil apply vs. exported matrix,
 // automatic differentiation through the stencil, and argument checks.
 #define BOOST_TEST_MODULE sbp_operator
-#include <boost/test/unit_test.hpp>
 #include <boost/test/data/test_case.hpp>
-
+#include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <limits>
 
@@ -65,7 +64,8 @@ BOOST_DATA_TEST_CASE(SbpProperty_HDPlusDtH_EqualsB, bdata::make(kNames), name) {
     const Eigen::VectorXd h = d.NormDiagonal();
     Eigen::MatrixXd residual =
         Eigen::MatrixXd(h.asDiagonal() * D) +
-        Eigen::MatrixXd(Eigen::SparseMatrix<double>(D.transpose()) * h.asDiagonal());
+        Eigen::MatrixXd(Eigen::SparseMatrix<double>(D.transpose()) *
+                        h.asDiagonal());
     residual(0, 0) += 1.0;
     residual(n - 1, n - 1) -= 1.0;
     const double hd_norm = Eigen::MatrixXd(h.asDiagonal() * D).norm();
@@ -83,7 +83,8 @@ BOOST_DATA_TEST_CASE(Exactness_UpToOrder_AndFailsOneDegreeHigher,
     const auto d = MakeOperator<long double>(name, n, -1.0L, 2.0L);
     long double weakest_failure = std::numeric_limits<long double>::infinity();
     for (int i = 0; i < n; ++i) {
-      const bool interior = i >= table.boundary_rows() && i < n - table.boundary_rows();
+      const bool interior =
+          i >= table.boundary_rows() && i < n - table.boundary_rows();
       const RowExactness r = ExactDegree(d, i, p);
       BOOST_TEST_CONTEXT(name << " N=" << n << " row " << i) {
         if (interior) {
@@ -112,8 +113,11 @@ BOOST_DATA_TEST_CASE(Quadrature_DegreeIsTwiceBoundaryOrderMinusOne,
       std::vector<long double> f(n);
       for (int i = 0; i < n; ++i) f[i] = std::pow(d.t(i), k);
       const long double quad = d.Integrate(std::span<const long double>(f));
-      const long double exact = (std::pow(2.0L, k + 1) - std::pow(-1.0L, k + 1)) / (k + 1);
-      if (std::fabs(quad - exact) > 64 * n * Eps<long double>() * std::pow(2.0L, k + 1)) break;
+      const long double exact =
+          (std::pow(2.0L, k + 1) - std::pow(-1.0L, k + 1)) / (k + 1);
+      if (std::fabs(quad - exact) >
+          64 * n * Eps<long double>() * std::pow(2.0L, k + 1))
+        break;
       degree = k;
     }
     BOOST_TEST(degree == expected, name << " N=" << n);
@@ -166,7 +170,8 @@ BOOST_DATA_TEST_CASE(JetJacobianOfApply_EqualsD, bdata::make(kNames), name) {
     }
     const auto du = d.Apply(u);
     for (int i = 0; i < n; ++i)
-      for (int l = 0; l < kLanes && c0 + l < n; ++l) jac(i, c0 + l) = du[i].v[l];
+      for (int l = 0; l < kLanes && c0 + l < n; ++l)
+        jac(i, c0 + l) = du[i].v[l];
   }
   BOOST_TEST((jac - dense).cwiseAbs().maxCoeff() <=
              4 * Eps<double>() * dense.cwiseAbs().maxCoeff());
@@ -190,9 +195,12 @@ BOOST_AUTO_TEST_CASE(NestedJets_SecondDerivativeOfQuadraticForm) {
   for (const auto& x : du) f += x * x;
   const Eigen::MatrixXd dtd = d.DenseD().transpose() * d.DenseD();
   const double scale = dtd.cwiseAbs().maxCoeff();
-  BOOST_TEST(std::abs(f.v[0].v[1] - 2 * dtd(a, b)) <= 64 * Eps<double>() * scale);
-  BOOST_TEST(std::abs(f.v[0].v[0] - 2 * dtd(a, a)) <= 64 * Eps<double>() * scale);
-  BOOST_TEST(std::abs(f.v[1].v[1] - 2 * dtd(b, b)) <= 64 * Eps<double>() * scale);
+  BOOST_TEST(std::abs(f.v[0].v[1] - 2 * dtd(a, b)) <=
+             64 * Eps<double>() * scale);
+  BOOST_TEST(std::abs(f.v[0].v[0] - 2 * dtd(a, a)) <=
+             64 * Eps<double>() * scale);
+  BOOST_TEST(std::abs(f.v[1].v[1] - 2 * dtd(b, b)) <=
+             64 * Eps<double>() * scale);
 }
 
 BOOST_AUTO_TEST_CASE(Factory_RejectsBadArguments_NamingTheValidRange) {
@@ -219,14 +227,16 @@ BOOST_AUTO_TEST_CASE(Factory_RejectsBadArguments_NamingTheValidRange) {
   BOOST_TEST(message([] {
                MakeOperator<double>("sbp21", 32, 0.0,
                                     std::numeric_limits<double>::quiet_NaN());
-             }) == "time interval [0, nan] is invalid; need finite values "
-                   "with t_end > t_start");
+             }) ==
+             "time interval [0, nan] is invalid; need finite values "
+             "with t_end > t_start");
   BOOST_TEST(message([] {
                const auto d = MakeOperator<double>("sbp21", 4);
                std::vector<double> u(3);
                d.Apply(u);
-             }) == "sbp21 operator on 4 points applied to vectors of length 3 "
-                   "-> 3; both must have length 4");
+             }) ==
+             "sbp21 operator on 4 points applied to vectors of length 3 "
+             "-> 3; both must have length 4");
 }
 
 BOOST_AUTO_TEST_CASE(MinimumGrid_IsSmallestWithoutOverlappingClosures) {

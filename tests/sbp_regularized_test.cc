@@ -2,7 +2,6 @@
 // corrected per formulation notes §1.3).
 #define BOOST_TEST_MODULE sbp_regularized
 #include <boost/test/unit_test.hpp>
-
 #include <limits>
 
 #include "core/sbp/builder.h"

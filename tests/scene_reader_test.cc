@@ -251,7 +251,8 @@ BOOST_AUTO_TEST_CASE(BadInput_DofNotCompiled) {
     sizes += (sizes.empty() ? "" : ", ") + std::to_string(d);
   BOOST_TEST(ErrorOf(With(2, "dof = 5")) ==
              "bad.toml:2:7: dof = 5 is not among the compiled sizes; expected "
-             "one of " + sizes +
+             "one of " +
+                 sizes +
                  " (add the size to VIVP_SCENE_DOFS in apps/CMakeLists.txt)");
 }
 

@@ -61,9 +61,11 @@ BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {
   BOOST_TEST(r.x1.allFinite());
   BOOST_TEST(!r.status.converged);
   BOOST_TEST(r.status.reason.find("under-resolved: dt*omega = 10 exceeds") !=
-             std::string::npos, r.status.reason);
-  BOOST_TEST(r.status.reason.find("use at least 1001 points") !=
-             std::string::npos, r.status.reason);
+                 std::string::npos,
+             r.status.reason);
+  BOOST_TEST(
+      r.status.reason.find("use at least 1001 points") != std::string::npos,
+      r.status.reason);
   // Marching without stabilization inherits it: the first window reports,
   // the march stops.
   MarchOptions mo;
@@ -95,11 +97,12 @@ BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
   double max_x = 0, max_de = 0;
   for (Eigen::Index i = 0; i < m.x.rows(); ++i) {
     max_x = std::max(max_x, std::abs(m.x(i, 0)));
-    const double e = 0.5 * m.v(i, 0) * m.v(i, 0) + 0.5 * s.k * m.x(i, 0) * m.x(i, 0);
+    const double e =
+        0.5 * m.v(i, 0) * m.v(i, 0) + 0.5 * s.k * m.x(i, 0) * m.x(i, 0);
     max_de = std::max(max_de, std::abs(e - 5000.0) / 5000.0);
   }
-  BOOST_TEST_MESSAGE("stiff march: max|x| " << max_x << ", max rel. energy error "
-                                            << max_de);
+  BOOST_TEST_MESSAGE("stiff march: max|x| "
+                     << max_x << ", max rel. energy error " << max_de);
   BOOST_TEST(max_x <= 1.05);
   BOOST_TEST(max_de <= 0.1);
 }

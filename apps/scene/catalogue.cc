@@ -24,16 +24,18 @@ std::vector<EffectType> BuiltIn() {
   std::vector<EffectType> t;
   t.push_back(Type("kinetic", "L += ½ m|ẋ|²  (or ½ ẋᵀMẋ with a mass matrix M)",
                    {{"mass", K::kPositive, {1.0}, "scalar mass m"},
-                    {"matrix", K::kMatrix, {},
+                    {"matrix",
+                     K::kMatrix,
+                     {},
                      "symmetric positive definite M, dof rows (instead of "
                      "mass)"}}));
   t.back().kinetic = true;
   t.back().exclusive = {"mass", "matrix"};
-  t.push_back(Type("gravity", "L −= m g x_axis  (uniform field along −axis)",
-                   {{"mass", K::kPositive, {1.0}, "mass m"},
-                    {"g", K::kReal, {1.0}, "field strength g"},
-                    {"axis", K::kAxis, {-1.0},
-                     "coordinate index (default: last)"}}));
+  t.push_back(
+      Type("gravity", "L −= m g x_axis  (uniform field along −axis)",
+           {{"mass", K::kPositive, {1.0}, "mass m"},
+            {"g", K::kReal, {1.0}, "field strength g"},
+            {"axis", K::kAxis, {-1.0}, "coordinate index (default: last)"}}));
   t.push_back(Type("spring", "L −= ½ k|x − c|²",
                    {{"k", K::kNonNegative, {1.0}, "stiffness k"},
                     {"centre", K::kVector, {0.0}, "rest point c"}}));
@@ -46,13 +48,13 @@ std::vector<EffectType> BuiltIn() {
                    {{"k", K::kPositive, {1.0}, "strength k"}}));
   t.push_back(Type("gaussian_well", "L += a exp(−|x|²/2)  (seed 003: ẍ = ∇U)",
                    {{"amplitude", K::kReal, {1.0}, "depth a"}}));
-  t.push_back(Type("chain",
-                   "L −= Σ_bonds ½ k Δ² + ¼ β Δ⁴, Δ = x_{i+1} − x_i  (FPU; "
-                   "walls x_{−1} = x_dof = 0 with fixed_ends)",
-                   {{"k", K::kNonNegative, {1.0}, "bond stiffness k"},
-                    {"beta", K::kReal, {0.0}, "quartic bond part β"},
-                    {"fixed_ends", K::kBool, {1.0},
-                     "bonds to walls at both ends"}}));
+  t.push_back(
+      Type("chain",
+           "L −= Σ_bonds ½ k Δ² + ¼ β Δ⁴, Δ = x_{i+1} − x_i  (FPU; "
+           "walls x_{−1} = x_dof = 0 with fixed_ends)",
+           {{"k", K::kNonNegative, {1.0}, "bond stiffness k"},
+            {"beta", K::kReal, {0.0}, "quartic bond part β"},
+            {"fixed_ends", K::kBool, {1.0}, "bonds to walls at both ends"}}));
   t.push_back(Type("damping",
                    "Λ = −ξ ẋ₊·x₋  (friction force −ξẋ, seed 000 eq. 40)",
                    {{"xi", K::kNonNegative, {0.1}, "friction coefficient ξ"}}));
@@ -89,28 +91,34 @@ const EffectType* FindEffectType(const std::string& name) {
 
 std::string EffectNameList() {
   std::string out;
-  for (const auto& t : EffectCatalogue()) out += (out.empty() ? "" : ", ") + t.name;
+  for (const auto& t : EffectCatalogue())
+    out += (out.empty() ? "" : ", ") + t.name;
   return out;
 }
 
 std::string DescribeKind(ParameterKind kind, int dof) {
   const std::string n = std::to_string(dof);
   switch (kind) {
-    case K::kReal: return "a finite number";
-    case K::kPositive: return "a finite number > 0";
-    case K::kNonNegative: return "a finite number >= 0";
-    case K::kVector: return "an array of " + n + " finite numbers";
+    case K::kReal:
+      return "a finite number";
+    case K::kPositive:
+      return "a finite number > 0";
+    case K::kNonNegative:
+      return "a finite number >= 0";
+    case K::kVector:
+      return "an array of " + n + " finite numbers";
     case K::kMatrix:
       return "a symmetric positive definite " + n + "x" + n +
              " array of arrays";
-    case K::kBool: return "true or false";
-    case K::kAxis: return "a whole number from 0 to " + std::to_string(dof - 1);
+    case K::kBool:
+      return "true or false";
+    case K::kAxis:
+      return "a whole number from 0 to " + std::to_string(dof - 1);
   }
   return "?";
 }
 
-problems::Effect MakeEffect(const EffectType& type,
-                            const ParameterValues& v) {
+problems::Effect MakeEffect(const EffectType& type, const ParameterValues& v) {
   namespace e = problems::effects;
   const std::string& n = type.name;
   if (n == "kinetic") {

@@ -1,9 +1,9 @@
 #include "apps/scene/reference.h"
 
-#include <boost/math/special_functions/ellint_1.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <algorithm>
 #include <array>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
 
 #include "problems/anharmonic.h"
@@ -74,10 +74,9 @@ class PendulumReference : public Reference {
   }
   void State(double t, double* x, double* v) override {
     double cn = 0, dn = 0;
-    const double sn =
-        k_ > 0 ? boost::math::jacobi_elliptic(k_, omega_ * (t - t0_) + u0_,
-                                              &cn, &dn)
-               : 0.0;
+    const double sn = k_ > 0 ? boost::math::jacobi_elliptic(
+                                   k_, omega_ * (t - t0_) + u0_, &cn, &dn)
+                             : 0.0;
     x[0] = offset_ + 2 * std::asin(k_ * sn);
     v[0] = 2 * k_ * omega_ * cn;
   }
@@ -116,7 +115,10 @@ class KeplerReference : public Reference {
     double lo = m - 2, hi = m + 2, de = m;  // |ΔE − nΔt| ≤ 2e < 2
     for (int it = 0; it < 200; ++it) {
       const double f = kepler(de);
-      if (f > 0) hi = de; else lo = de;
+      if (f > 0)
+        hi = de;
+      else
+        lo = de;
       const double slope = 1 + c1 * std::sin(de) - c2 * std::cos(de);
       double next = de - f / slope;
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);

@@ -47,16 +47,15 @@ std::string StepperUnavailable(const Scene& s) {
     if (e.type->dissipative)
       return "needs a Hamiltonian system, but effect '" + e.type->name +
              "' is dissipative (a Λ term)";
-  if (s.order != 2)
-    return "needs a second-order system with kinetic energy";
+  if (s.order != 2) return "needs a second-order system with kinetic energy";
   return "";
 }
 
 RunOutcome RunScene(const Scene& s, RunSink& sink) {
   if (const EffectType* type = s.registered())
     return FindRegistered(type->name)->run(s, sink);
-  return detail::Dispatch(
-      s, sink, std::integer_sequence<int, VIVP_SCENE_DOFS>{});
+  return detail::Dispatch(s, sink,
+                          std::integer_sequence<int, VIVP_SCENE_DOFS>{});
 }
 
 }  // namespace vivp::scene

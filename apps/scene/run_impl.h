@@ -58,7 +58,7 @@ struct WithUser {
   void AddDiagonalGradient(const Real* p,
                            action::DiagonalVector<Real, kDim>& out) const {
     action::AddLagrangianTermGradient<action::Depends::kBoth, kDim>(user, p,
-                                                                   out);
+                                                                    out);
     if constexpr (action::HasLambda<U>)
       action::AddLambdaTermGradient<kDim>(
           [&](const auto*... a) { return user.Lambda(a...); }, p, out);
@@ -85,15 +85,17 @@ class NodeEmitter {
     if (s.Wants("angular_momentum")) {
       if (d == 2) c.push_back("angular_momentum");
       if (d == 3)
-        for (const char* n : {"angular_momentum_x", "angular_momentum_y",
-                              "angular_momentum_z"})
+        for (const char* n :
+             {"angular_momentum_x", "angular_momentum_y", "angular_momentum_z"})
           c.push_back(n);
     }
     reference_ = MakeReference(problem, s);
     if (reference_) {
       layout_.reference_x = int(c.size());
-      for (int k = 0; k < d; ++k) c.push_back("x_reference" + std::to_string(k));
-      for (int k = 0; k < d; ++k) c.push_back("v_reference" + std::to_string(k));
+      for (int k = 0; k < d; ++k)
+        c.push_back("x_reference" + std::to_string(k));
+      for (int k = 0; k < d; ++k)
+        c.push_back("v_reference" + std::to_string(k));
       if (s.Wants("energy")) c.push_back("energy_reference");
       if (s.Wants("error")) {
         c.push_back("error_x");
@@ -111,8 +113,7 @@ class NodeEmitter {
 
   // Node `index` of the grid (0 … points − 1).
   void Node(long long index, double t, const double* x, const double* v) {
-    if (index % scene_.output.stride != 0 && index != scene_.points - 1)
-      return;
+    if (index % scene_.output.stride != 0 && index != scene_.points - 1) return;
     int k = 0;
     double p[d] = {};
     if (scene_.Wants("energy") || scene_.Wants("momentum") ||
@@ -214,8 +215,8 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
     j["end_position_error_estimate"] = sol.corrected.position_error_estimate;
     j["end_velocity_error_estimate"] = sol.corrected.velocity_error_estimate;
     out.end_x = sol.corrected.position;
-    out.end_v = s.order == 2 ? sol.corrected.velocity
-                             : std::vector<double>(d, 0.0);
+    out.end_v =
+        s.order == 2 ? sol.corrected.velocity : std::vector<double>(d, 0.0);
     for (int i = 0; i < sol.points(); ++i) {
       double x[d], v[d];
       for (int c = 0; c < d; ++c) {
@@ -235,14 +236,14 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
   long long index = 0;
   double output_seconds = 0;
   const double span = s.t_end - s.t_start;
-  const MarchResult r = MarchIvp(
-      problem, initial, grid, options,
-      [&](double t, const double* x, const double* v) {
-        const auto t0 = Clock::now();
-        emit.Node(index++, t, x, v);
-        sink.Progress((t - s.t_start) / span);
-        output_seconds += Since(t0);
-      });
+  const MarchResult r =
+      MarchIvp(problem, initial, grid, options,
+               [&](double t, const double* x, const double* v) {
+                 const auto t0 = Clock::now();
+                 emit.Node(index++, t, x, v);
+                 sink.Progress((t - s.t_start) / span);
+                 output_seconds += Since(t0);
+               });
   out.seconds = Since(start) - output_seconds;
   out.converged = r.status.converged;
   out.status = r.status.converged ? "converged" : r.status.reason;
@@ -260,8 +261,8 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
 }
 
 template <int D>
-RunOutcome RunStepper(const problems::Composed<D>& lagrangian,
-                      const Scene& s, RunSink& sink) {
+RunOutcome RunStepper(const problems::Composed<D>& lagrangian, const Scene& s,
+                      RunSink& sink) {
   using H = problems::ComposedHamiltonian<D>;
   const H hamiltonian(lagrangian.effects);
   const steppers::HamiltonianSystem<H> system(hamiltonian);
@@ -294,8 +295,8 @@ RunOutcome RunStepper(const problems::Composed<D>& lagrangian,
   out.converged = r.status == steppers::Status::kOk;
   out.status = out.converged
                    ? "completed"
-                   : steppers::ToString(r.status) + " at t = " +
-                         std::to_string(s.t_start + r.failed_at);
+                   : steppers::ToString(r.status) +
+                         " at t = " + std::to_string(s.t_start + r.failed_at);
   out.solver["step"] = h;
   out.solver["steps"] = r.steps;
   out.solver["iterations"] = r.iterations;

@@ -174,12 +174,12 @@ void AddLambdaTermGradient(const F& lambda, const Real* p,
 // providing AddDiagonalDerivatives(p, out) and AddDiagonalGradient(p, out);
 // otherwise L and Λ are each differentiated whole.
 template <class P, class Real>
-concept DifferentiatesByTerms =
-    requires(const P& problem, const Real* p, Diagonal<Real, P::kDim>& dd,
-             DiagonalVector<Real, P::kDim>& g) {
-      problem.AddDiagonalDerivatives(p, dd);
-      problem.AddDiagonalGradient(p, g);
-    };
+concept DifferentiatesByTerms = requires(const P& problem, const Real* p,
+                                         Diagonal<Real, P::kDim>& dd,
+                                         DiagonalVector<Real, P::kDim>& g) {
+  problem.AddDiagonalDerivatives(p, dd);
+  problem.AddDiagonalGradient(p, g);
+};
 
 // ∂f/∂m and ∂²f/∂m∂p of the ± density at m = 0, p = (x₊, v₊): ∇L(p) and
 // ∇²L(p) (see AddLagrangianTerm) plus Λ's own mixed derivatives.
@@ -260,7 +260,7 @@ int SystemOrder(const P& problem, const Real* x, const Real* v) {
     return DeclaredOrder<P>();
   } else {
     return MassMatrix<Real>(problem, x, v).cwiseAbs().maxCoeff() > Real(0) ? 2
-                                                                          : 1;
+                                                                           : 1;
   }
 }
 

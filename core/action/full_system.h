@@ -29,8 +29,12 @@ class FullSystem {
 
   FullSystem(const P& problem, const sbp::RegularizedOperator<Real>& dbar,
              const State& x_init, const State& v_init, int order)
-      : problem_(problem), dbar_(dbar), x_init_(x_init), v_init_(v_init),
-        order_(order), n_(dbar.points()) {}
+      : problem_(problem),
+        dbar_(dbar),
+        x_init_(x_init),
+        v_init_(v_init),
+        order_(order),
+        n_(dbar.points()) {}
 
   int points() const { return n_; }
   int order() const { return order_; }
@@ -40,7 +44,9 @@ class FullSystem {
   int Lambda1(int c) const { return c; }
   int Lambda2(int c) const { return d + c; }
   // Path a = 0 (forward, x1) or 1 (backward, x2).
-  int X(int a, int node, int c) const { return lead() + (2 * node + a) * d + c; }
+  int X(int a, int node, int c) const {
+    return lead() + (2 * node + a) * d + c;
+  }
   int Lambda3(int c) const { return lead() + 2 * n_ * d + c; }
   int Lambda4(int c) const { return lead() + 2 * n_ * d + d + c; }
 
@@ -57,8 +63,8 @@ class FullSystem {
   }
 
   // The node values z = (x1, v1, x2, v2) at node i.
-  void NodeValues(const std::vector<Real> (*x)[d], const std::vector<Real> (*v)[d],
-                  int i, Real* z) const {
+  void NodeValues(const std::vector<Real> (*x)[d],
+                  const std::vector<Real> (*v)[d], int i, Real* z) const {
     for (int c = 0; c < d; ++c) {
       z[c] = x[0][c][i];
       z[d + c] = v[0][c][i];

@@ -41,7 +41,8 @@ LocalMap<Real> MakeLocalMap(const sbp::RegularizedOperator<Real>& dbar, int i) {
     if (i == 0 && node == 0) wv += dbar.penalty();
     const Real wx = node == i ? Real(1) : Real(0);
     has_i = has_i || node == i;
-    if (wv != Real(0) || wx != Real(0)) map.entries[map.size++] = {node, wx, wv};
+    if (wv != Real(0) || wx != Real(0))
+      map.entries[map.size++] = {node, wx, wv};
   }
   if (!has_i) map.entries[map.size++] = {i, Real(1), Real(0)};
   return map;

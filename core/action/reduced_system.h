@@ -36,8 +36,12 @@ class ReducedSystem {
 
   ReducedSystem(const P& problem, const sbp::RegularizedOperator<Real>& dbar,
                 const State& x_init, const State& v_init, int order)
-      : problem_(problem), dbar_(dbar), x_init_(x_init), v_init_(v_init),
-        order_(order), n_(dbar.points()) {}
+      : problem_(problem),
+        dbar_(dbar),
+        x_init_(x_init),
+        v_init_(v_init),
+        order_(order),
+        n_(dbar.points()) {}
 
   int points() const { return n_; }
   int order() const { return order_; }
@@ -65,7 +69,8 @@ class ReducedSystem {
       x[c].resize(n_);
       v[c].resize(n_);
       for (int i = 0; i < n_; ++i) x[c][i] = y[X(i, c)];
-      dbar_.Apply(std::span<const Real>(x[c]), x_init_[c], std::span<Real>(v[c]));
+      dbar_.Apply(std::span<const Real>(x[c]), x_init_[c],
+                  std::span<Real>(v[c]));
     }
   }
 
@@ -103,7 +108,8 @@ class ReducedSystem {
     for (int c = 0; c < d; ++c) {
       D.Apply(std::span<const Real>(w[c]), std::span<Real>(dw));
       for (int j = 0; j < n_; ++j) f[NodeRow(j, c)] -= D.NormWeight(j) * dw[j];
-      f[NodeRow(0, c)] += (-dbar_.sigma0() - Real(1)) * w[c][0];  // penalty·H_0 = −σ0
+      f[NodeRow(0, c)] +=
+          (-dbar_.sigma0() - Real(1)) * w[c][0];  // penalty·H_0 = −σ0
       f[NodeRow(n_ - 1, c)] += w[c][n_ - 1];
       f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
       f[c] = x[c][0] - x_init_[c];

@@ -48,7 +48,8 @@ ValueGradientHessian<Real, K> Hessian(const F& f, const Real* z) {
   ValueGradientHessian<Real, K> out;
   out.value = r.value().value();
   out.gradient = r.value().derivatives();
-  for (int a = 0; a < K; ++a) out.hessian.row(a) = r.derivatives()[a].derivatives();
+  for (int a = 0; a < K; ++a)
+    out.hessian.row(a) = r.derivatives()[a].derivatives();
   return out;
 }
 
@@ -103,7 +104,8 @@ Eigen::Matrix<Real, M, 1> MinusGradient(const F& f, const Real* p,
                                         const Real* m) {
   using Scalar = First<Real, M>;
   Scalar pv[P], mv[M];
-  for (int k = 0; k < P; ++k) pv[k] = Scalar(p[k], Eigen::Matrix<Real, M, 1>::Zero());
+  for (int k = 0; k < P; ++k)
+    pv[k] = Scalar(p[k], Eigen::Matrix<Real, M, 1>::Zero());
   for (int k = 0; k < M; ++k)
     mv[k] = Scalar(m[k], Eigen::Matrix<Real, M, 1>::Unit(k));
   return f(pv, mv).derivatives();

@@ -20,7 +20,10 @@ class BandedMatrix {
   BandedMatrix() = default;
   // n x n with kl sub- and ku super-diagonals.
   BandedMatrix(int n, int kl, int ku)
-      : n_(n), kl_(kl), ku_(ku), ld_(2 * kl + ku + 1),
+      : n_(n),
+        kl_(kl),
+        ku_(ku),
+        ld_(2 * kl + ku + 1),
         data_(static_cast<std::size_t>(ld_) * n, Real(0)) {}
 
   int size() const { return n_; }
@@ -36,8 +39,9 @@ class BandedMatrix {
   void Add(int i, int j, Real v) {
     if (i - j > kl_ || j - i > ku_ || i < 0 || j < 0 || i >= n_ || j >= n_)
       throw std::logic_error("banded entry (" + std::to_string(i) + ", " +
-                             std::to_string(j) + ") outside band kl=" +
-                             std::to_string(kl_) + " ku=" + std::to_string(ku_));
+                             std::to_string(j) +
+                             ") outside band kl=" + std::to_string(kl_) +
+                             " ku=" + std::to_string(ku_));
     data_[Index(i, j)] += v;
   }
   Real operator()(int i, int j) const {

@@ -25,7 +25,8 @@ inline constexpr std::array<std::string_view, 4> kOperatorNames = {
 
 inline std::string OperatorNameList() {
   std::string out;
-  for (auto n : kOperatorNames) out += (out.empty() ? "" : ", ") + std::string(n);
+  for (auto n : kOperatorNames)
+    out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
 }
 
@@ -44,10 +45,9 @@ Operator<Real> MakeOperator(std::string_view name, long long points,
                             Real t_start = Real(0), Real t_end = Real(1)) {
   const Coefficients& table = Table(name);
   if (points < table.min_points) {
-    throw std::invalid_argument(
-        std::string(name) + " needs at least " +
-        std::to_string(table.min_points) + " points, got " +
-        std::to_string(points));
+    throw std::invalid_argument(std::string(name) + " needs at least " +
+                                std::to_string(table.min_points) +
+                                " points, got " + std::to_string(points));
   }
   if (points > (1LL << 30)) {
     throw std::invalid_argument("too many points (" + std::to_string(points) +

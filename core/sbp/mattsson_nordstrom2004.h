@@ -19,6 +19,9 @@
 
 namespace vivp::sbp {
 
+// The tables keep one closure row per line, as in the paper.
+// clang-format off
+
 inline constexpr std::string_view kSbp63Citation =
     "Mattsson & Nordström (2004), J. Comput. Phys. 199, 503-540 "
     "(x1 = 342523/518400)";
@@ -72,5 +75,7 @@ inline const Coefficients& Sbp84() {
   };
   return kCoefficients;
 }
+
+// clang-format on
 
 }  // namespace vivp::sbp

@@ -23,7 +23,9 @@ template <class Real>
 class RegularizedOperator {
  public:
   explicit RegularizedOperator(Operator<Real> d, Real sigma0 = Real(-1))
-      : d_(std::move(d)), sigma0_(sigma0), penalty_(-sigma0 / d_.NormWeight(0)) {
+      : d_(std::move(d)),
+        sigma0_(sigma0),
+        penalty_(-sigma0 / d_.NormWeight(0)) {
     if (!std::isfinite(static_cast<long double>(sigma0)))
       throw std::invalid_argument("sigma0 must be finite, got " +
                                   std::to_string(static_cast<double>(sigma0)));

@@ -19,7 +19,8 @@ namespace {
 // parameters and initial data, with L = ½|ẋ|² − V: the momentum the harness
 // compares is the velocity.
 bool InRegistry(const std::string& problem) {
-  return problem == "anharmonic" || problem == "pendulum" || problem == "kepler";
+  return problem == "anharmonic" || problem == "pendulum" ||
+         problem == "kepler";
 }
 
 ExternalRun RunVariational(const std::string& op, const std::string& problem,
@@ -88,9 +89,9 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, long steps,
   for (int r = 0; r < std::max(repeats, 1); ++r) {
     const auto begin = std::chrono::steady_clock::now();
     m = p.march(g, o, {});
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                              begin)
-                    .count());
+    t.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+            .count());
   }
   std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
   w.seconds = t[t.size() / 2];

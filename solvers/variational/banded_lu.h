@@ -51,7 +51,8 @@ class BandedLu {
       dgbtrs_(&trans, &n_, &kl, &ku, &nrhs, a_->data(), &ld, pivots_.data(), b,
               &n_, &info, 1);
       if (info != 0)
-        throw std::runtime_error("dgbtrs failed with info " + std::to_string(info));
+        throw std::runtime_error("dgbtrs failed with info " +
+                                 std::to_string(info));
     } else {
       Eigen::Map<Eigen::Matrix<Real, Eigen::Dynamic, 1>> v(b, n_);
       v = lu_.solve(Eigen::Matrix<Real, Eigen::Dynamic, 1>(v));

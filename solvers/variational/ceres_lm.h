@@ -150,8 +150,8 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
         deps.push_back(u.data() + c0);
       }
     }
-    cp.AddResidualBlock(new detail::GradientRows<System>(cache, r0, sizes[b],
-                                                         dep_offsets, dep_sizes),
+    cp.AddResidualBlock(new detail::GradientRows<System>(
+                            cache, r0, sizes[b], dep_offsets, dep_sizes),
                         nullptr, deps);
   }
 
@@ -164,8 +164,8 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   so.gradient_tolerance = 1e-32;
   so.parameter_tolerance = 1e-16;
   so.minimizer_progress_to_stdout = ceres_options.verbose;
-  so.logging_type = ceres_options.verbose ? ceres::PER_MINIMIZER_ITERATION
-                                          : ceres::SILENT;
+  so.logging_type =
+      ceres_options.verbose ? ceres::PER_MINIMIZER_ITERATION : ceres::SILENT;
   so.num_threads = 1;
   ceres::Solver::Summary summary;
   ceres::Solve(so, &cp, &summary);
@@ -182,9 +182,9 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   report.converged = summary.termination_type == ceres::CONVERGENCE &&
                      report.residual_norm <= floor;
   std::ostringstream why;
-  why << "Ceres LM: " << ceres::TerminationTypeToString(summary.termination_type)
-      << " after " << report.iterations << " iterations, |∇S|∞ = "
-      << report.residual_norm;
+  why << "Ceres LM: "
+      << ceres::TerminationTypeToString(summary.termination_type) << " after "
+      << report.iterations << " iterations, |∇S|∞ = " << report.residual_norm;
   if (!report.converged) why << " (above the acceptance bound " << floor << ")";
   report.reason = why.str();
   report.seconds.total =

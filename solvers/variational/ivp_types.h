@@ -26,9 +26,12 @@ enum class Path { kReducedNewton, kFullNewton, kCeresLm };
 
 inline const char* PathName(Path p) {
   switch (p) {
-    case Path::kReducedNewton: return "newton";
-    case Path::kFullNewton: return "full-newton";
-    case Path::kCeresLm: return "ceres-lm";
+    case Path::kReducedNewton:
+      return "newton";
+    case Path::kFullNewton:
+      return "full-newton";
+    case Path::kCeresLm:
+      return "ceres-lm";
   }
   return "?";
 }
@@ -71,12 +74,13 @@ struct IvpSolution {
   Matrix x1, x2;                // paths, points x dof
   Matrix velocity;              // D x1
   Matrix velocity_regularized;  // D̄ x̄1
-  std::vector<Real> lambda1, lambda2, lambda3, lambda4;  // d each (λ2, λ4: order 2)
+  std::vector<Real> lambda1, lambda2, lambda3,
+      lambda4;  // d each (λ2, λ4: order 2)
   CorrectedEnd<Real> corrected;
   Status status;
   int iterations = 0;
-  double gradient_norm = 0;  // ‖∇S‖∞ of the full doubled action
-  double residual_norm = 0;  // ‖F‖∞ of the system that was solved
+  double gradient_norm = 0;        // ‖∇S‖∞ of the full doubled action
+  double residual_norm = 0;        // ‖F‖∞ of the system that was solved
   double max_path_difference = 0;  // max |x1 − x2|
   solvers::Timings seconds;
 

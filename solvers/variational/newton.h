@@ -28,8 +28,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -64,11 +64,11 @@ struct Timings {
 struct NewtonReport {
   bool converged = false;
   std::string reason;
-  int iterations = 0;  // Jacobian factorizations
-  int corrections = 0;  // Newton + refinement steps taken
-  double last_step = 0;  // |δ|∞ of the last correction
+  int iterations = 0;        // Jacobian factorizations
+  int corrections = 0;       // Newton + refinement steps taken
+  double last_step = 0;      // |δ|∞ of the last correction
   double residual_norm = 0;  // |F(y)|∞ at the returned y
-  int kl = 0, ku = 0;  // band of the Jacobian
+  int kl = 0, ku = 0;        // band of the Jacobian
   Timings seconds;
 };
 
@@ -121,8 +121,12 @@ NewtonReport Newton(
   // Per-phase clock, a no-op unless options.phase_timings.
   struct {
     bool on;
-    Clock::time_point Now() const { return on ? Clock::now() : Clock::time_point{}; }
-    double Since(Clock::time_point t0) const { return on ? detail::Since(t0) : 0.0; }
+    Clock::time_point Now() const {
+      return on ? Clock::now() : Clock::time_point{};
+    }
+    double Since(Clock::time_point t0) const {
+      return on ? detail::Since(t0) : 0.0;
+    }
   } clock{options.phase_timings};
   NewtonReport report;
   const int n = system.size();
@@ -165,7 +169,8 @@ NewtonReport Newton(
     return report;
   };
 
-  if (!residual()) return finish(false, "non-finite residual at the initial guess");
+  if (!residual())
+    return finish(false, "non-finite residual at the initial guess");
   Real previous_step = std::numeric_limits<Real>::infinity();
   // A factorization carried over from an earlier solve is stale: it may take
   // more (chord) corrections, as long as each contracts.
@@ -182,8 +187,9 @@ NewtonReport Newton(
       report.seconds.factorization += clock.Since(t0);
       ++report.iterations;
       ++fc.factorizations;
-      if (!ok) return finish(false, "singular Jacobian at iteration " +
-                                        std::to_string(report.iterations));
+      if (!ok)
+        return finish(false, "singular Jacobian at iteration " +
+                                 std::to_string(report.iterations));
       fc.valid = true;
       stale = false;
     }
@@ -202,8 +208,8 @@ NewtonReport Newton(
       ++report.corrections;
       report.last_step = double(step);
       const Real scale = ymax;
-      if (!options.final_residual && std::isfinite(step) && std::isfinite(scale) &&
-          step <= tol * scale) {
+      if (!options.final_residual && std::isfinite(step) &&
+          std::isfinite(scale) && step <= tol * scale) {
         // Converged; F at the returned y is not evaluated (f holds δ).
         std::fill(f.begin(), f.end(), std::numeric_limits<Real>::quiet_NaN());
         return finish(true, "correction at round-off");
@@ -211,16 +217,15 @@ NewtonReport Newton(
       if (!residual())
         return finish(false, "non-finite residual after correction " +
                                  std::to_string(report.corrections));
-      if (step <= tol * scale)
-        return finish(true, "correction at round-off");
+      if (step <= tol * scale) return finish(true, "correction at round-off");
       // Two refinement steps in a row give the contraction θ of the
       // simplified iteration; the error left is about θ/(1−θ)·step.
       const Real theta = step / previous_step;
       if (r >= 2 && theta < Real(0.5) &&
           theta / (Real(1) - theta) * step <= tol * scale)
-        return finish(true, "refinement converged (estimated remaining error " +
-                                std::to_string(double(theta / (1 - theta) * step)) +
-                                ")");
+        return finish(
+            true, "refinement converged (estimated remaining error " +
+                      std::to_string(double(theta / (1 - theta) * step)) + ")");
       previous_step = step;
       if (theta >= Real(0.5)) {
         // Corrections stopped shrinking: round-off if already tiny.

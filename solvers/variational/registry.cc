@@ -18,10 +18,9 @@ const std::vector<NamedProblem>& Registry() {
     r.push_back(detail::Entry("freefall", "free fall, L = ½ẋ² − x (eq. 24)",
                               FreeFall{}, {{1.0}, {0.3}},
                               detail::Scalar<FreeFall>));
-    r.push_back(detail::Entry("anharmonic",
-                              "anharmonic oscillator, L = ½ẋ² − 5x⁴ (eq. 33)",
-                              Anharmonic{}, {{1.0}, {0.3}},
-                              detail::Scalar<Anharmonic>));
+    r.push_back(detail::Entry(
+        "anharmonic", "anharmonic oscillator, L = ½ẋ² − 5x⁴ (eq. 33)",
+        Anharmonic{}, {{1.0}, {0.3}}, detail::Scalar<Anharmonic>));
     r.push_back(detail::Entry(
         "exponential", "first order ẋ = 5x/2, L = −5x²/4, Λ = ẋ₊x₋ (eq. 39)",
         Exponential{}, {{1.0}, {}}, [](const Exponential& p, double t) {
@@ -42,7 +41,8 @@ const std::vector<NamedProblem>& Registry() {
     auto canonical = [](const auto& p, double t) {
       const std::vector<double> y = p.Exact(t);
       const std::size_t d = y.size() / 2;
-      return ExactState{{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
+      return ExactState{
+          {y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
     };
     auto initial = [](const auto& p) {
       const std::vector<double> y = p.Initial();
@@ -74,8 +74,8 @@ const NamedProblem& FindProblem(const std::string& name) {
 }
 
 ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
-                               const SolveOptions& options,
-                               long long slab_points, const ExactState& exact) {
+                        const SolveOptions& options, long long slab_points,
+                        const ExactState& exact) {
   MarchOptions mo;
   mo.window_points = slab_points;
   mo.solve = options;
@@ -88,15 +88,17 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
   const std::size_t last = m.t.size() - 1;
   auto maxdiff = [](auto&& a, const std::vector<double>& b) {
     double v = 0;
-    for (std::size_t c = 0; c < b.size(); ++c) v = std::max(v, std::abs(a(c) - b[c]));
+    for (std::size_t c = 0; c < b.size(); ++c)
+      v = std::max(v, std::abs(a(c) - b[c]));
     return v;
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   if (!m.t.empty()) {
     r.err_x = maxdiff([&](std::size_t c) { return m.x(last, c); }, exact.x);
-    r.err_v = exact.v.empty() ? nan
-                              : maxdiff([&](std::size_t c) { return m.v(last, c); },
-                                        exact.v);
+    r.err_v =
+        exact.v.empty()
+            ? nan
+            : maxdiff([&](std::size_t c) { return m.v(last, c); }, exact.v);
   }
   r.err_x_corrected =
       maxdiff([&](std::size_t c) { return m.end_position[c]; }, exact.x);
@@ -115,10 +117,9 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
 }
 
 ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
-                                       const std::vector<long long>& points,
-                                       const SolveOptions& options,
-                                       double round_off_floor,
-                                       long long slab_points) {
+                                const std::vector<long long>& points,
+                                const SolveOptions& options,
+                                double round_off_floor, long long slab_points) {
   ConvergenceStudy study;
   const double span = grid.t_end - grid.t_start;
   const ExactState exact = problem.exact(grid.t_end);
@@ -139,7 +140,8 @@ ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
     const int last = s.points() - 1;
     auto maxdiff = [](auto&& a, const std::vector<double>& b) {
       double m = 0;
-      for (std::size_t c = 0; c < b.size(); ++c) m = std::max(m, std::abs(a(c) - b[c]));
+      for (std::size_t c = 0; c < b.size(); ++c)
+        m = std::max(m, std::abs(a(c) - b[c]));
       return m;
     };
     r.err_x = maxdiff([&](std::size_t c) { return s.x1(last, c); }, exact.x);

@@ -23,13 +23,14 @@ NamedProblem Entry(std::string name, std::string description, P problem,
     return SolveIvp(problem, initial, g, o);
   };
   e.march = [problem, initial](const Grid& g, const MarchOptions& o,
-                                const NodeObserver& observer) {
+                               const NodeObserver& observer) {
     return MarchIvp(problem, initial, g, o, observer);
   };
   e.exact = [problem, exact_fn](double t) {
     ExactState s = exact_fn(problem, t);
     if (!s.v.empty()) {
-      const auto m = action::MassMatrix<double>(problem, s.x.data(), s.v.data());
+      const auto m =
+          action::MassMatrix<double>(problem, s.x.data(), s.v.data());
       for (int r = 0; r < P::kDim; ++r) {
         double p = 0;
         for (int c = 0; c < P::kDim; ++c) p += m(r, c) * s.v[c];

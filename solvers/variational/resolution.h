@@ -40,8 +40,10 @@ double FastestFrequency(const P& problem, const double* x, const double* v) {
   }
   const auto h = ad::Hessian<double, 2 * d>(
       [&](const auto* s) { return problem(s, s + d); }, z);
-  const Eigen::Matrix<double, d, d> m = h.hessian.template bottomRightCorner<d, d>();
-  const Eigen::Matrix<double, d, d> k = -h.hessian.template topLeftCorner<d, d>();
+  const Eigen::Matrix<double, d, d> m =
+      h.hessian.template bottomRightCorner<d, d>();
+  const Eigen::Matrix<double, d, d> k =
+      -h.hessian.template topLeftCorner<d, d>();
   if (m.cwiseAbs().maxCoeff() == 0.0) return 0.0;
   const Eigen::Matrix<double, d, d> a = m.fullPivLu().solve(k);
   const auto ev = a.eigenvalues();
