@@ -330,12 +330,12 @@ int RunVerify(BeaOptions o) {
     for (const auto& row : sweep.rows) {
       nlohmann::json jr = {{"h", row.h}, {"steps", row.steps}};
       for (std::size_t c = 0; c < sweep.names.size(); ++c)
-        jr[sweep.names[c]] = row.max_deviation[c];
+        jr[sweep.names[c]] = JsonNumber(row.max_deviation[c]);
       j["rows"].push_back(jr);
     }
     j["slopes"] = nlohmann::json::object();
     for (std::size_t c = 0; c < sweep.slopes.size(); ++c)
-      j["slopes"][sweep.names[c]] = sweep.slopes[c];
+      j["slopes"][sweep.names[c]] = JsonNumber(sweep.slopes[c]);
     if (o.json == "-") {
       std::cout << j.dump(1) << "\n";
     } else {

@@ -65,19 +65,15 @@ std::vector<double> ParseSteps(const std::string& s) {
   return out;
 }
 
-nlohmann::json Number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 nlohmann::json RowJson(const steppers::WorkPoint& w) {
   return {{"method", w.method},
           {"steps", w.steps},
-          {"tolerance", Number(w.tolerance)},
-          {"h", Number(w.h)},
-          {"error", Number(w.error)},
-          {"energy_error", Number(w.energy_error)},
-          {"invariant_error", Number(w.invariant_error)},
-          {"seconds", Number(w.seconds)},
+          {"tolerance", JsonNumber(w.tolerance)},
+          {"h", JsonNumber(w.h)},
+          {"error", JsonNumber(w.error)},
+          {"energy_error", JsonNumber(w.energy_error)},
+          {"invariant_error", JsonNumber(w.invariant_error)},
+          {"seconds", JsonNumber(w.seconds)},
           {"evaluations", w.evaluations},
           {"iterations", w.iterations},
           {"iterations_per_step", w.iterations_per_step},

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -31,6 +32,10 @@ Runner AddSceneCommand(CLI::App& app);
 void CheckOutputDirectory(const std::filesystem::path& dir, bool force);
 // Same for a single output file.
 void CheckOutputFile(const std::filesystem::path& file, bool force);
+
+// A JSON number, or null for a non-finite value (a fitted order that does
+// not exist, an error that overflowed): JSON has no NaN or infinity.
+nlohmann::json JsonNumber(double v);
 
 // CLI11 validators with messages that name the valid values.
 CLI::Validator FiniteNumber();

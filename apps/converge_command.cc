@@ -52,15 +52,11 @@ std::vector<long long> ParsePoints(const std::string& list) {
   return out;
 }
 
-nlohmann::json Number(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 nlohmann::json OrdersJson(const ConvergenceOrders& o) {
-  return {{"x", Number(o.x)},
-          {"v", Number(o.v)},
-          {"x_corrected", Number(o.x_corrected)},
-          {"p_corrected", Number(o.p_corrected)}};
+  return {{"x", JsonNumber(o.x)},
+          {"v", JsonNumber(o.v)},
+          {"x_corrected", JsonNumber(o.x_corrected)},
+          {"p_corrected", JsonNumber(o.p_corrected)}};
 }
 
 Path ParseSolver(const std::string& s) {
@@ -134,11 +130,11 @@ int RunConverge(const ConvergeOptions& o) {
       rows.push_back({{"points", r.points},
                       {"dt", r.dt},
                       {"dt_true", r.dt_true},
-                      {"err_x", Number(r.err_x)},
-                      {"err_v", Number(r.err_v)},
-                      {"err_x_corrected", Number(r.err_x_corrected)},
-                      {"err_p_corrected", Number(r.err_p_corrected)},
-                      {"error_estimate", Number(r.error_estimate)},
+                      {"err_x", JsonNumber(r.err_x)},
+                      {"err_v", JsonNumber(r.err_v)},
+                      {"err_x_corrected", JsonNumber(r.err_x_corrected)},
+                      {"err_p_corrected", JsonNumber(r.err_p_corrected)},
+                      {"error_estimate", JsonNumber(r.error_estimate)},
                       {"iterations", r.iterations},
                       {"fallbacks", r.fallbacks},
                       {"seconds", r.seconds},
