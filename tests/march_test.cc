@@ -3,11 +3,13 @@
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <random>
 
 #include "core/fit.h"
 #include "problems/anharmonic.h"
 #include "problems/damped_oscillator.h"
 #include "problems/kepler.h"
+#include "solvers/variational/banded_lu.h"
 #include "solvers/variational/registry.h"
 
 using namespace vivp;
@@ -265,4 +267,52 @@ BOOST_AUTO_TEST_CASE(FitOrders_LeaveOutRowsThatDidNotConverge) {
   study.rows.resize(2);  // 32 (not converged) and 64
   FitOrders(study, 1e-300);
   BOOST_TEST(std::isnan(study.orders.x));
+}
+
+// The per-window back-substitution (BandedLu::Substitute) against LAPACK's
+// dgbtrs on the same dgbtrf factors, over band shapes from a marched window's
+// (n about 50) to wider and degenerate ones (kl = 0, n smaller than the band):
+// the same operations in the same order, so the same solution to round-off,
+// and a small residual.
+BOOST_AUTO_TEST_CASE(BandedSubstitution_EqualsLapackDgbtrs) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  struct Shape {
+    int n, kl, ku;
+  };
+  for (const Shape sh : {Shape{52, 5, 5}, Shape{52, 9, 3}, Shape{200, 12, 12},
+                         Shape{30, 0, 4}, Shape{7, 6, 6}, Shape{1, 0, 0}}) {
+    linalg::BandedMatrix<double> a(sh.n, sh.kl, sh.ku);
+    for (int i = 0; i < sh.n; ++i)
+      for (int j = std::max(0, i - sh.kl); j <= std::min(sh.n - 1, i + sh.ku);
+           ++j)
+        a.Add(i, j, u(rng) + (i == j ? 0.5 : 0.0));
+    const linalg::BandedMatrix<double> original = a;
+    std::vector<double> b(sh.n);
+    for (double& v : b) v = u(rng);
+    solvers::BandedLu<double> lu;
+    BOOST_TEST_REQUIRE(lu.Factor(a));
+    std::vector<double> ours = b, lapack = b, ab(original.size());
+    lu.Solve(ours.data());
+    int kl = sh.kl, ku = sh.ku, ld = a.leading_dimension(), n = sh.n, nrhs = 1,
+        info = 0;
+    std::vector<int> pivots(n);
+    linalg::BandedMatrix<double> again = original;
+    dgbtrf_(&n, &n, &kl, &ku, again.data(), &ld, pivots.data(), &info);
+    BOOST_TEST_REQUIRE(info == 0);
+    const char trans = 'N';
+    dgbtrs_(&trans, &n, &kl, &ku, &nrhs, again.data(), &ld, pivots.data(),
+            lapack.data(), &n, &info, 1);
+    BOOST_TEST_REQUIRE(info == 0);
+    double scale = 0, difference = 0, residual = 0;
+    original.Multiply(ours.data(), ab.data());
+    for (int i = 0; i < n; ++i) {
+      scale = std::max(scale, std::abs(lapack[i]));
+      difference = std::max(difference, std::abs(ours[i] - lapack[i]));
+      residual = std::max(residual, std::abs(ab[i] - b[i]));
+    }
+    BOOST_TEST_INFO("n = " << n << ", kl = " << kl << ", ku = " << ku);
+    BOOST_TEST(difference <= 1e-13 * scale);
+    BOOST_TEST(residual <= 1e-12 * scale);
+  }
 }

@@ -1,9 +1,12 @@
 // LU factorization with partial pivoting of a banded matrix, O(n kl (kl+ku)).
-// double goes to LAPACK's dgbtrf/dgbtrs; any other scalar (long double) to
-// Eigen's SparseLU on the same band.
+// double goes to LAPACK's dgbtrf, and the substitutions of dgbtrs on its
+// factors (Substitute); any other scalar (long double) to Eigen's SparseLU on
+// the same band.
 #pragma once
 
 #include <Eigen/SparseLU>
+#include <algorithm>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -45,17 +48,40 @@ class BandedLu {
   // b <- A^{-1} b.
   void Solve(Real* b) const {
     if constexpr (std::is_same_v<Real, double>) {
-      int kl = a_->lower(), ku = a_->upper(), ld = a_->leading_dimension();
-      int nrhs = 1, info = 0;
-      const char trans = 'N';
-      dgbtrs_(&trans, &n_, &kl, &ku, &nrhs, a_->data(), &ld, pivots_.data(), b,
-              &n_, &info, 1);
-      if (info != 0)
-        throw std::runtime_error("dgbtrs failed with info " +
-                                 std::to_string(info));
+      Substitute(*a_, pivots_.data(), b);
     } else {
       Eigen::Map<Eigen::Matrix<Real, Eigen::Dynamic, 1>> v(b, n_);
       v = lu_.solve(Eigen::Matrix<Real, Eigen::Dynamic, 1>(v));
+    }
+  }
+
+  // b <- A^{-1} b from dgbtrf's factors of A (in `lu`, pivots 1-based): the
+  // two substitutions of LAPACK's dgbtrs (trans = 'N', one right-hand side),
+  // in the same order of operations. dgbtrs itself makes two BLAS calls per
+  // row (dswap, dger) and solves U with dtbsv; on the narrow band of a
+  // marched window (about 50 rows, kl + ku about 10) that call overhead was
+  // 45% of the run time of bench/march_bench (perf), for a few hundred flops.
+  static void Substitute(const linalg::BandedMatrix<double>& lu,
+                         const int* pivots, double* b) {
+    const int n = lu.size(), kl = lu.lower(), ld = lu.leading_dimension();
+    const int kd = kl + lu.upper();  // row of the diagonal in the band
+    const double* ab = lu.data();
+    // L: the row interchanges and multipliers of each column in turn.
+    for (int j = 0; j + 1 < n; ++j) {
+      const int l = pivots[j] - 1;
+      if (l != j) std::swap(b[l], b[j]);
+      const int lm = std::min(kl, n - 1 - j);
+      const double* m = ab + std::size_t(j) * ld + kd + 1;
+      const double bj = b[j];
+      for (int i = 0; i < lm; ++i) b[j + 1 + i] -= m[i] * bj;
+    }
+    // U: upper triangular with kl + ku superdiagonals (dtbsv's column sweep).
+    for (int j = n - 1; j >= 0; --j) {
+      if (b[j] == 0.0) continue;
+      const double* u = ab + std::size_t(j) * ld;
+      b[j] /= u[kd];
+      const double t = b[j];
+      for (int i = std::max(0, j - kd); i < j; ++i) b[i] -= t * u[kd + i - j];
     }
   }
 

@@ -117,10 +117,22 @@ class WindowEngine {
         ve[k][c] = D.ApplyRow(i, xc_[c].data());
       }
     }
+    double omega_end = 0.0;
     if (order() == 2) {
-      std::string why =
-          UnderResolution(problem_, grid_, xe[0], ve[0], xe[1], ve[1]);
+      // ω at the window's start: when the window starts from this engine's
+      // last hand-off, it is the last window's ω at its end (the same time,
+      // and the same state up to the multiplier correction, which is the
+      // size of the error estimate). Only the first window, and a window
+      // after a fallback, evaluates it: one pointwise Hessian per window
+      // instead of two.
+      const bool continues =
+          omega_end_ >= 0.0 && x0 == handed_x_ && v0 == handed_v_;
+      const double omega_start =
+          continues ? omega_end_ : FastestFrequency(problem_, xe[0], ve[0]);
+      omega_end = FastestFrequency(problem_, xe[1], ve[1]);
+      std::string why = UnderResolution(grid_, omega_start, omega_end);
       if (!why.empty()) {
+        omega_end_ = -1.0;
         o.failure = std::move(why);
         o.split_helps = false;
         return o;
@@ -134,6 +146,11 @@ class WindowEngine {
     }
     o.end = CorrectEnd<double>(problem_, order(), xe[1], ve[1], l3,
                                order() == 2 ? l4 : nullptr);
+    omega_end_ = omega_end;
+    for (int c = 0; c < d; ++c) {
+      handed_x_[c] = o.end.position[c];
+      handed_v_[c] = order() == 2 ? o.end.velocity[c] : 0.0;
+    }
     const double length = grid_.t_end;
     for (int c = 0; c < d; ++c)
       trend_[c] = order() == 2 ? (o.end.velocity[c] - v0[c]) / length
@@ -167,6 +184,10 @@ class WindowEngine {
   std::vector<double> y_;
   solvers::FactorCache<double> cache_;
   State trend_{};
+  // The last window's corrected end state (the next window's initial data
+  // unless a fallback intervened) and ω there; ω < 0: none yet.
+  State handed_x_{}, handed_v_{};
+  double omega_end_ = -1.0;
   std::vector<double> xc_[d], v_[d];
   double end_v_[d] = {};
 };

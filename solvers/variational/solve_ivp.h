@@ -158,13 +158,11 @@ IvpSolution<Real> Finish(const P& problem,
 // The advice is based on ω at the first state: at the last one ω may come
 // from a solution that has already grown without bound, and the point count
 // it implies is meaningless (a quartic potential's ω grows with |x|).
-template <class P>
-std::string UnderResolution(const P& problem, const Grid& grid,
-                            const double* xa, const double* va,
-                            const double* xb, const double* vb) {
+// This form takes ω at the two states (FastestFrequency) when the caller has
+// them already.
+inline std::string UnderResolution(const Grid& grid, double omega_a,
+                                   double omega_b) {
   const double dt = (grid.t_end - grid.t_start) / double(grid.points - 1);
-  const double omega_a = FastestFrequency(problem, xa, va);
-  const double omega_b = FastestFrequency(problem, xb, vb);
   const double limit = StabilityLimit(grid.op);
   const double worst = dt * std::max(omega_a, omega_b);
   if (!(worst > limit)) return "";
@@ -189,6 +187,14 @@ std::string UnderResolution(const P& problem, const Grid& grid,
          "(at least " +
          std::to_string(2 * (grid.points - 1) + 1) +
          ") and check that the end state stays bounded";
+}
+
+template <class P>
+std::string UnderResolution(const P& problem, const Grid& grid,
+                            const double* xa, const double* va,
+                            const double* xb, const double* vb) {
+  return UnderResolution(grid, FastestFrequency(problem, xa, va),
+                         FastestFrequency(problem, xb, vb));
 }
 
 // Marks a converged solve as not converged when the grid is under-resolved.
