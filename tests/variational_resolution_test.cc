@@ -106,3 +106,25 @@ BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
   BOOST_TEST(max_x <= 1.05);
   BOOST_TEST(max_de <= 0.1);
 }
+
+BOOST_AUTO_TEST_CASE(UnderResolutionAdvice_ComesFromTheFirstState) {
+  // SBP42 (limit Δt·ω = 1) on 101 points over [0, 10], Δt = 0.1. Within the
+  // limit at both states: no complaint.
+  const Grid grid{.op = "sbp42", .points = 101, .t_start = 0.0, .t_end = 10.0};
+  BOOST_TEST(detail::UnderResolution(grid, 5.0, 9.0).empty());
+  // Over it at the first state (Δt·ω = 3): the points that ω asks for,
+  // ⌈T·ω / limit⌉ + 1 = 301.
+  const std::string start = detail::UnderResolution(grid, 30.0, 40.0);
+  BOOST_TEST(start.find("dt*omega = 4 exceeds the stability limit 1") !=
+             std::string::npos);
+  BOOST_TEST(start.find("use at least 301 points") != std::string::npos);
+  // Within it at the first state (0.5) and far over at the last (1e5): the
+  // solution grew on the way, and the last state's ω, which came from the
+  // grown solution, must not set the advice (it would ask for 1e7 points);
+  // twice the points, 201, and a check of the end state instead.
+  const std::string grew = detail::UnderResolution(grid, 5.0, 1e6);
+  BOOST_TEST(grew.find("dt*omega = 1e+05") != std::string::npos);
+  BOOST_TEST(grew.find("grew on the way") != std::string::npos);
+  BOOST_TEST(grew.find("at least 201") != std::string::npos);
+  BOOST_TEST(grew.find("10000001") == std::string::npos);
+}
