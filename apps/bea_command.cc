@@ -296,11 +296,19 @@ int RunVerify(BeaOptions o) {
   s.v0 = Eigen::Map<Eigen::VectorXd>(v0.data(), o.dim);
   s.t_end = o.t_end;
   s.difference_order = o.differences;
+  if (!(o.t_end > 0))
+    throw UsageError("--t-end: the end time must be positive, got " +
+                     std::to_string(o.t_end));
   const auto steps = Numbers(o.steps, "--steps");
   for (double h : steps)
-    if (h <= 0 || o.t_end / h > 1e7 || o.t_end / h < 20)
-      throw UsageError("each step h needs 20 <= t_end/h <= 1e7, got h = " +
-                       std::to_string(h));
+    if (!(h > 0) || o.t_end / h > 1e7 || o.t_end / h < 20) {
+      // Between 20 steps (a slope needs a trajectory) and 1e7 (time).
+      std::ostringstream m;
+      m << "--steps: each h must lie in [t_end/1e7, t_end/20] = ["
+        << o.t_end / 1e7 << ", " << o.t_end / 20 << "] for --t-end " << o.t_end
+        << ", got h = " << h;
+      throw UsageError(m.str());
+    }
   const auto sweep = bea::ConservationSweep(r, q, *potential, s, steps);
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;

@@ -36,6 +36,10 @@ BOOST_AUTO_TEST_CASE(BadInput_ExitsTwoWithOneLineNamingTheFix) {
       {"bea derive --method rk4 --order 2", "use sv, lmm4 or midpoint"},
       {"bea verify --method lmm4 --dim 2 --steps 0.1", "numeric coefficients"},
       {"bea verify --method sv --steps 0.1,x", "comma-separated numbers"},
+      {"bea verify --method sv --potential pendulum --steps -0.1 --t-end 10",
+       "[1e-06, 0.5] for --t-end 10, got h = -0.1"},
+      {"bea verify --method sv --potential pendulum --steps 0.1 --t-end -5",
+       "the end time must be positive"},
   };
   for (const auto& c : cases) {
     const auto r = Vivp(c.args);
