@@ -83,6 +83,41 @@ BOOST_AUTO_TEST_CASE(MidpointDimension2_FourChecks_HoldToH6) {
   ExpectAllPass(r, true);
 }
 
+BOOST_AUTO_TEST_CASE(EachSelfCheck_CatchesAResultWrongAtOneOrder) {
+  // Required failures: a result made wrong at one order only must fail
+  // there, and only the check that covers the wrong part may fail.
+  auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)),
+                  Options(4, PotentialModel::kRadial, Rotation()));
+  BOOST_REQUIRE(r.charge);
+  BOOST_TEST(CheckOddOrdersVanish(r).passed);
+  BOOST_TEST(CheckHamiltonianStructure(r).passed);
+  BOOST_TEST(CheckChargeConserved(r).passed);
+  const GiNaC::ex term = r.v(0) * r.v(0) * r.x(1) / 1000;
+  {
+    BeaResult wrong = r;  // an odd Euler-Lagrange order that does not vanish
+    wrong.euler_lagrange[3][1] += term;
+    const auto c = CheckOddOrdersVanish(wrong);
+    BOOST_TEST(!c.passed);
+    BOOST_TEST(c.failing_order == 3);
+  }
+  {
+    BeaResult wrong = r;  // H_mod off at h^4
+    wrong.hamiltonian[4] += term;
+    const auto c = CheckHamiltonianStructure(wrong);
+    BOOST_TEST(!c.passed);
+    BOOST_TEST(c.failing_order == 4);
+    BOOST_TEST(CheckChargeConserved(wrong).passed);
+  }
+  {
+    BeaResult wrong = r;  // the modified charge off at h^2
+    (*wrong.charge)[2] += term;
+    const auto c = CheckChargeConserved(wrong);
+    BOOST_TEST(!c.passed);
+    BOOST_TEST(c.failing_order == 2);
+    BOOST_TEST(CheckHamiltonianStructure(wrong).passed);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(ModifiedLagrangian_PerturbedAtH4_IsCaughtAtH4) {
   // Required failure: a Lagrangian that is wrong at h^4 only must fail there.
   auto r = Derive(MakeStormerVerlet(1), Options(6, PotentialModel::kGeneric));

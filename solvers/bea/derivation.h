@@ -98,7 +98,15 @@ struct BeaResult {
 // above MaxOrder(method) (with the time it would take and how to proceed).
 BeaResult Derive(const Method& method, const DeriveOptions& options);
 
-// The Lagrangian L(x, x') (a series) generates the modified equation: its
+// Derive's self-checks, each on its own (a test shows each one failing on a
+// deliberately wrong result):
+// the odd orders of the Euler-Lagrange expansion vanish identically;
+SelfCheck CheckOddOrdersVanish(const BeaResult& r);
+// Hamilton's equations with ω and H reproduce the modified equation;
+SelfCheck CheckHamiltonianStructure(BeaResult& r);
+// the modified charge (which r must have) is conserved by the modified flow;
+SelfCheck CheckChargeConserved(BeaResult& r);
+// the Lagrangian L(x, x') (a series) generates the modified equation: its
 // Euler-Lagrange equations with x'' = f vanish to the truncation order.
 SelfCheck CheckLagrangianGeneratesF(BeaResult& r, const Series& lagrangian);
 
