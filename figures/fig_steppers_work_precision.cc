@@ -15,10 +15,8 @@ int main(int argc, char** argv) {
   using namespace vivp::steppers;
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const double budget = argc > 2 ? std::atof(argv[2]) : 0.1;
-  for (const char* name : {"harmonic", "pendulum", "anharmonic", "damped",
-                           "kepler", "kepler_e09", "henon_heiles", "nldnls"}) {
-    const BenchProblem& p = FindBenchProblem(name);
-    vivp::plot::Figure fig(dir, std::string("fig_steppers_wp_") + name);
+  for (const BenchProblem& p : BenchProblems()) {
+    vivp::plot::Figure fig(dir, "fig_steppers_wp_" + p.name);
     std::string plots;
     int style = 1;
     for (const auto& m : p.methods) {

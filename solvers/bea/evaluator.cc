@@ -82,7 +82,7 @@ ModifiedQuantities::ModifiedQuantities(const BeaResult& r,
   const bool with_omega = static_cast<int>(r.omega.size()) == n2;
   // L_mod is compiled only if it is a polynomial in the variables below;
   // otherwise Lagrangian() reports why.
-  bool with_lagrangian = r.modified_lagrangian.has_value();
+  const bool with_lagrangian = r.modified_lagrangian.has_value();
   if (!with_lagrangian)
     no_lagrangian_ = "the derivation has no first-order modified Lagrangian";
   for (int p = 0; p <= order_; ++p) {
@@ -117,21 +117,20 @@ ModifiedQuantities::ModifiedQuantities(const BeaResult& r,
   };
   f_.resize(dim_);
   if (with_omega) omega_.resize(n2 * n2);
-  bool lagrangian_ok = true;
   for (int p = 0; p <= order_; ++p) {
     compile(hamiltonian_);
     if (r.charge) compile(charge_);
     for (int i = 0; i < dim_; ++i) compile(f_[i]);
     for (auto& w : omega_) compile(w);
     if (with_lagrangian) {
-      if (!lagrangian_ok) {
+      // no_lagrangian_ is set once a term failed to compile: skip the rest.
+      if (!no_lagrangian_.empty()) {
         ++k;  // this order's L_mod term, not compiled
         continue;
       }
       try {
         compile(lagrangian_);  // consumes all[k] even when it throws
       } catch (const std::invalid_argument& e) {
-        lagrangian_ok = false;
         lagrangian_.clear();
         no_lagrangian_ = std::string("L_mod is not a polynomial: ") + e.what();
       }
