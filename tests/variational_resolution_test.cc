@@ -80,9 +80,14 @@ BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {
 BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
   // Proves hard case 5 of the marching issue: at Δt·ω = 10 the default march
   // solves each window on a grid refined to Δt·ω ≤ half the limit (×20 for
-  // SBP42), returns the requested grid, and stays bounded with the energy of
-  // the oscillation (E = ½v² + ½κx², exact value 5000 throughout; measured
-  // max|x| 1.03, energy error 7.7 %, from the node velocities Dx).
+  // SBP42); there a window of 31 requested steps spans 11 periods and
+  // deviates from the exact local flow by 17 % (the accuracy check of
+  // window_solve.h), so the march, which already chooses the solve grid,
+  // refines once more (×40, Δt·ω = 0.25). It returns the requested grid and
+  // stays on the energy of the oscillation (E = ½v² + ½κx², exact value 5000
+  // throughout; measured max|x| 1.0017, energy error 0.79 % at the returned
+  // nodes before the last, whose velocity is the closure row (Dx)_N, and
+  // 0.032 % for the handed-off end state, whose velocity is M⁻¹(−λ3)).
   Spring s;
   s.k = 1e4;
   const Grid g{.op = "sbp42", .points = 101, .t_end = 10.0};
@@ -90,21 +95,25 @@ BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
   mo.window_points = 32;
   const auto m = MarchIvp(s, {{1.0}, {0.0}}, g, mo);
   BOOST_TEST(m.status.converged, m.status.reason);
-  BOOST_TEST(m.refinement == 20);
-  BOOST_TEST(m.status.reason.find("refined x20") != std::string::npos);
+  BOOST_TEST(m.refinement == 40);
+  BOOST_TEST(m.status.reason.find("refined x40") != std::string::npos);
   BOOST_TEST(m.t.size() == 101u);
   BOOST_TEST(m.x.allFinite());
+  auto energy_error = [&](double x, double v) {
+    return std::abs(0.5 * v * v + 0.5 * s.k * x * x - 5000.0) / 5000.0;
+  };
   double max_x = 0, max_de = 0;
-  for (Eigen::Index i = 0; i < m.x.rows(); ++i) {
+  for (Eigen::Index i = 0; i + 1 < m.x.rows(); ++i) {
     max_x = std::max(max_x, std::abs(m.x(i, 0)));
-    const double e =
-        0.5 * m.v(i, 0) * m.v(i, 0) + 0.5 * s.k * m.x(i, 0) * m.x(i, 0);
-    max_de = std::max(max_de, std::abs(e - 5000.0) / 5000.0);
+    max_de = std::max(max_de, energy_error(m.x(i, 0), m.v(i, 0)));
   }
+  const double end_de = energy_error(m.end_position[0], m.end_velocity[0]);
   BOOST_TEST_MESSAGE("stiff march: max|x| "
-                     << max_x << ", max rel. energy error " << max_de);
-  BOOST_TEST(max_x <= 1.05);
-  BOOST_TEST(max_de <= 0.1);
+                     << max_x << ", max rel. energy error " << max_de
+                     << ", at the end state " << end_de);
+  BOOST_TEST(max_x <= 1.01);
+  BOOST_TEST(max_de <= 0.01);
+  BOOST_TEST(end_de <= 1e-3);
 }
 
 BOOST_AUTO_TEST_CASE(UnderResolutionAdvice_ComesFromTheFirstState) {

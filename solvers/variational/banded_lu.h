@@ -6,10 +6,10 @@
 
 #include <Eigen/SparseLU>
 #include <algorithm>
-#include <utility>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/linalg/banded.h"

@@ -1,6 +1,7 @@
-// Time-slab marching: [t_start, t_end] solved window by window (formulation
-// §1.8). The method is causal, so each window is an IVP of its own whose
-// initial data are handed over from the previous one:
+// Time-slab marching: [t_start, t_end] solved window by window (Rothkopf &
+// Nordström 2023 solve one global system; windows keep the cost per node
+// constant and the memory O(window)). The method is causal, so each window is
+// an IVP of its own whose initial data are handed over from the previous one:
 //
 //   HandOff::kCorrected (default)  (x_N + M⁻¹λ4, M⁻¹(−λ3)) — the
 //       multiplier-corrected end state; marching then keeps the global order
@@ -9,224 +10,243 @@
 //       the one-window map grows by ≈1.5 % per window at Δt = 0.1 and the
 //       march does not converge.
 //
-// Windows share their end points: a global grid of Nt points with windows of W
-// points has (Nt − 1)/(W − 1) windows (the last one takes the remainder, at
-// least the operator's minimum). A window whose Newton solve fails is split in
-// two halves (recursively, down to the operator's minimum), and every such
-// fallback is counted.
+// Every window starts Newton from an independent order-5 integration of the
+// Euler–Lagrange equations (predictor.h) and is accepted only after the
+// a-posteriori checks of window_solve.h: the right branch of the discrete
+// equations, or a reported failure, never a wrong answer marked converged.
 //
-// Output: an observer sees every node once, in order, so memory stays
-// O(window) when the caller streams; the stitched trajectory is kept only if
-// asked for.
+// Two ways to choose the windows:
+//   uniform grid (MarchOptions::tolerance disabled): grid.points nodes; a
+//       window of W points covers W − 1 intervals, the last one takes the
+//       remainder (at least the operator's minimum). A window that fails is
+//       solved again with a fresh Jacobian, then split in halves (down to
+//       the operator's minimum); with `stabilize`, a window whose Δt·ω
+//       exceeds the stability limit is solved on a refined grid;
+//   error control (tolerance enabled): every window has W points and a Δt
+//       chosen by a step-size controller (step_control.h) from the window's
+//       embedded error estimates; a window whose estimates exceed the
+//       tolerance, or that fails, is rejected and solved again with a
+//       smaller Δt. SBP21, whose position estimate is unreliable, estimates
+//       by step doubling (the window again at Δt/2; the finer one is kept).
+// Every fallback, rejection and check failure is counted and reported.
+//
+// Output: an observer sees every node once, in order, with its time, so
+// memory stays O(window) when the caller streams; the stitched trajectory is
+// kept only if asked for.
 #pragma once
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
-#include <map>
-#include <memory>
-#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/window_solve.h"
 
 namespace vivp {
 
 namespace detail {
 
-// Solves windows of one length. The operators, the reduced system with its
-// scratch space, and the Jacobian factorization are built once and reused:
-// the Lagrangian does not depend on t, so every window of the same length has
-// the same discrete equations up to the initial data. A linear problem is
-// thus factored once and each window costs back-substitutions and residuals
-// (the chord steps of solvers::Newton with a FactorCache); a nonlinear one
-// starts each window from the previous window's factorization and refactors
-// only when the chord steps stop contracting.
 template <class P>
-class WindowEngine {
+class Marcher {
  public:
   static constexpr int d = P::kDim;
-  using State = std::array<double, d>;
+  using Attempt = WindowAttempt<d>;
 
-  // A window of `points` nodes of the global grid, solved on a grid refined
-  // `refine` times (refine − 1 extra nodes per global step).
-  WindowEngine(const P& problem, const Grid& global, long long points,
-               int order, int refine)
+  Marcher(const P& problem, const Grid& grid, const MarchOptions& options,
+          const NodeObserver& observer, MarchResult& out, int order,
+          int min_points)
       : problem_(problem),
-        grid_(WindowGrid(global, points, refine)),
-        dbar_(
-            sbp::MakeOperator<double>(grid_.op, grid_.points, 0.0, grid_.t_end),
-            grid_.sigma0),
-        system_(problem, dbar_, State{}, State{}, order),
-        y_(system_.size(), 0.0) {}
+        grid_(grid),
+        options_(options),
+        observer_(observer),
+        out_(out),
+        order_(order),
+        min_points_(min_points),
+        solver_(problem, grid.op, grid.sigma0, options, order) {}
 
-  const sbp::Operator<double>& D() const { return dbar_.base(); }
-  int order() const { return system_.order(); }
-  // The last solved window: position and velocity D x of DOF c at node i.
-  double x(int i, int c) const { return xc_[c][i]; }
-  double v(int i, int c) const { return v_[c][i]; }
-  double end_velocity(int c) const { return end_v_[c]; }
-
-  struct Outcome {
-    solvers::NewtonReport report;
-    CorrectedEnd<double> end;
-    std::string failure;      // empty on success
-    bool split_helps = true;  // false: a shorter window has the same Δt
-  };
-
-  // Solves the window that starts at `initial`. On success the nodes are in
-  // x(i, c), the velocities D x in v(i, c) if `velocities` is set.
-  Outcome Solve(const InitialData& initial,
-                const solvers::NewtonOptions& newton, bool velocities) {
-    Outcome o;
-    State x0{}, v0{};
-    for (int c = 0; c < d; ++c) {
-      x0[c] = initial.x[c];
-      v0[c] = initial.v.empty() ? 0.0 : initial.v[c];
+  // The uniform grid of grid.points nodes.
+  bool Uniform(InitialData& state) {
+    Refine(state, false);  // planned from the initial state, not a fallback
+    const long long intervals = grid_.points - 1;
+    const long long per_window = options_.window_points - 1;
+    long long done = 0;
+    while (done < intervals) {
+      long long take = std::min(per_window, intervals - done);
+      // Never leave a remainder shorter than the operator allows: absorb it.
+      if (intervals - done - take > 0 &&
+          intervals - done - take < min_points_ - 1)
+        take = intervals - done;
+      if (!Window(state, done, take + 1, 0, done + take == intervals))
+        return false;
+      done += take;
     }
-    system_.SetInitial(x0, v0);
-    // Guess: a Taylor polynomial with the previous window's mean second
-    // derivative (order 2) or slope (order 1); the multipliers stay at the
-    // previous window's values, which change slowly from window to window.
-    const auto& D = dbar_.base();
-    const int n = D.points();
-    for (int i = 0; i < n; ++i) {
-      const double tau = D.t(i);
-      for (int c = 0; c < d; ++c)
-        y_[system_.X(i, c)] =
-            order() == 2 ? x0[c] + tau * (v0[c] + 0.5 * tau * trend_[c])
-                         : x0[c] + tau * trend_[c];
-    }
-    o.report = solvers::Newton<double>(system_, y_, newton, {}, &cache_);
-    if (!o.report.converged) {
-      cache_.valid = false;
-      o.failure = o.report.reason;
-      return o;
-    }
-    for (int c = 0; c < d; ++c) {
-      xc_[c].resize(n);
-      for (int i = 0; i < n; ++i) xc_[c][i] = y_[system_.X(i, c)];
-    }
-    double xe[2][d], ve[2][d];
-    for (int k = 0; k < 2; ++k) {
-      const int i = k == 0 ? 0 : n - 1;
-      for (int c = 0; c < d; ++c) {
-        xe[k][c] = xc_[c][i];
-        ve[k][c] = D.ApplyRow(i, xc_[c].data());
-      }
-    }
-    double omega_end = 0.0;
-    if (order() == 2) {
-      // ω at the window's start: when the window starts from this engine's
-      // last hand-off, it is the last window's ω at its end (the same time,
-      // and the same state up to the multiplier correction, which is the
-      // size of the error estimate). Only the first window, and a window
-      // after a fallback, evaluates it: one pointwise Hessian per window
-      // instead of two.
-      const bool continues =
-          omega_end_ >= 0.0 && x0 == handed_x_ && v0 == handed_v_;
-      const double omega_start =
-          continues ? omega_end_ : FastestFrequency(problem_, xe[0], ve[0]);
-      omega_end = FastestFrequency(problem_, xe[1], ve[1]);
-      std::string why = UnderResolution(grid_, omega_start, omega_end);
-      if (!why.empty()) {
-        omega_end_ = -1.0;
-        o.failure = std::move(why);
-        o.split_helps = false;
-        return o;
-      }
-    }
-    for (int c = 0; c < d; ++c) end_v_[c] = ve[1][c];
-    double l3[d], l4[d];
-    for (int c = 0; c < d; ++c) {
-      l3[c] = y_[system_.Lambda3(c)];
-      l4[c] = order() == 2 ? y_[system_.Lambda4(c)] : 0.0;
-    }
-    o.end = CorrectEnd<double>(problem_, order(), xe[1], ve[1], l3,
-                               order() == 2 ? l4 : nullptr);
-    omega_end_ = omega_end;
-    for (int c = 0; c < d; ++c) {
-      handed_x_[c] = o.end.position[c];
-      handed_v_[c] = order() == 2 ? o.end.velocity[c] : 0.0;
-    }
-    const double length = grid_.t_end;
-    for (int c = 0; c < d; ++c)
-      trend_[c] = order() == 2 ? (o.end.velocity[c] - v0[c]) / length
-                               : (o.end.position[c] - x0[c]) / length;
-    if (velocities) {
-      for (int c = 0; c < d; ++c) {
-        v_[c].resize(n);
-        D.Apply(std::span<const double>(xc_[c]), std::span<double>(v_[c]));
-      }
-    }
-    return o;
+    return true;
   }
 
-  long long factorizations() const { return cache_.factorizations; }
+  // Error control: Δt per window from the embedded estimates.
+  bool Adaptive(InitialData& state) {
+    const double span = grid_.t_end - grid_.t_start;
+    const int w = int(options_.window_points);
+    const bool doubling = grid_.op == "sbp21";
+    StepController control(EstimateOrder(grid_.op));
+    double t = grid_.t_start;
+    double dt = InitialStep(state);
+    int rejected_in_row = 0;
+    while (t < grid_.t_end) {
+      if (order_ == 2) {
+        // Keep Δt·ω at half the stability limit (resolution.h) at the
+        // window's start.
+        const double omega =
+            FastestFrequency(problem_, state.x.data(), state.v.data());
+        if (omega > 0)
+          dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
+      }
+      const double remaining = grid_.t_end - t;
+      int n = w;
+      double dtw = dt;
+      bool last = false;
+      if (remaining <= double(w - 1) * dt * (1 + 1e-12)) {
+        n = int(std::ceil(remaining / dt - 1e-9)) + 1;
+        n = std::clamp(n, min_points_, w);
+        dtw = remaining / double(n - 1);
+        last = true;
+      } else if (remaining < 2.0 * double(w - 1) * dt) {
+        dtw = remaining / (2.0 * double(w - 1));  // two equal windows left
+      }
+      const bool underflow = !(dtw > 1e-13 * std::max(std::abs(t), span));
+      if (underflow || rejected_in_row > 40) {
+        FailAt(t, t + dtw * double(n - 1),
+               "the tolerance cannot be met: " +
+                   (underflow ? "the step fell to " + Text(dtw) +
+                                    ", below the round-off limit 1e-13 of the "
+                                    "time span"
+                              : std::to_string(rejected_in_row) +
+                                    " windows in a row rejected (step " +
+                                    Text(dtw) + ")") +
+                   (last_why_.empty() ? "" : "; last: " + last_why_),
+               last_residual_);
+        return false;
+      }
+      if (out_.points + n > options_.max_points) {
+        FailAt(t, t + dtw * double(n - 1),
+               "the tolerance needs more than max_points = " +
+                   std::to_string(options_.max_points) + " nodes (step " +
+                   Text(dtw) + ")",
+               last_residual_);
+        return false;
+      }
+      Attempt a = Solve(state, n, dtw, false);
+      if (a.ok() && doubling) a = Doubled(state, a);
+      const double err = a.ok() ? ErrorNorm(state, a) : NAN;
+      if (!a.ok() || !(err <= 1)) {
+        ++out_.rejected;
+        ++rejected_in_row;
+        last_why_ = a.ok()
+                        ? "error estimate " + Text(err) + " times the tolerance"
+                        : a.why;
+        last_residual_ = a.residual;
+        dt = a.ok() ? control.Reject(dtw, err) : 0.25 * dtw;
+        continue;
+      }
+      rejected_in_row = 0;
+      Accept(a, state, -1, t, last ? a.points : a.points - 1, 0, err);
+      t = last ? grid_.t_end : t + a.dt * double(a.points - 1);
+      dt = control.Accept(dtw, err);
+    }
+    return true;
+  }
+
+  long long factorizations() const { return solver_.factorizations(); }
 
  private:
-  static Grid WindowGrid(const Grid& global, long long points, int refine) {
-    Grid g = global;
-    const double dt =
-        (global.t_end - global.t_start) / double(global.points - 1);
-    g.t_start = 0.0;
-    g.t_end = dt * double(points - 1);
-    g.points = (points - 1) * refine + 1;
-    return g;
+  bool WantNodes() const { return bool(observer_) || options_.keep_trajectory; }
+
+  // The predictor's tolerance: a hundredth of the march's, so that its error
+  // is small against the window's (the consistency check compares them);
+  // on a uniform grid 1e-6, enough to tell a branch of the discrete
+  // equations from another (they differ by the size of the solution) and to
+  // start Newton within a few chord steps of its solution, at a third of the
+  // predictor's cost at 1e-9.
+  Tolerance PredictorTolerance() const {
+    const Tolerance& t = options_.tolerance;
+    if (!t.enabled()) return {1e-6, 1e-6};
+    return {t.absolute > 0 ? std::max(0.01 * t.absolute, 1e-15) : 0.0,
+            t.relative > 0 ? std::max(0.01 * t.relative, 1e-14) : 0.0};
   }
 
-  const P& problem_;
-  Grid grid_;
-  sbp::RegularizedOperator<double> dbar_;
-  action::ReducedSystem<P, double> system_;
-  std::vector<double> y_;
-  solvers::FactorCache<double> cache_;
-  State trend_{};
-  // The last window's corrected end state (the next window's initial data
-  // unless a fallback intervened) and ω there; ω < 0: none yet.
-  State handed_x_{}, handed_v_{};
-  double omega_end_ = -1.0;
-  std::vector<double> xc_[d], v_[d];
-  double end_v_[d] = {};
-};
-
-template <class P>
-struct Marcher {
-  static constexpr int d = P::kDim;
-  const P& problem;
-  const MarchOptions& options;
-  const Grid& global;
-  const NodeObserver& observer;
-  MarchResult& out;
-  int min_points;
-  int order;
-  long long emitted = 0;  // global index of the next node to emit
-  std::vector<double> xs, vs;
-  int refine = 1;  // solve grid = global grid refined this many times
-  std::map<std::pair<long long, int>, std::unique_ptr<WindowEngine<P>>> engines;
-
-  bool EngineApplies() const {
-    return options.solve.path == Path::kReducedNewton &&
-           !options.solve.extended_residual;
+  Attempt Solve(const InitialData& state, int points, double dt, bool fresh) {
+    Attempt a = solver_.Solve(state, points, dt, fresh, WantNodes(),
+                              PredictorTolerance(), !AdaptiveMode());
+    out_.predictor_steps += a.predictor_steps;
+    if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
+    if (!fresh && a.failure == WindowFailure::kNewton) {
+      // Chord steps on an earlier window's factorization did not converge:
+      // once more with a Jacobian of this window's own.
+      ++out_.fallbacks;
+      return Solve(state, points, dt, true);
+    }
+    return a;
   }
 
-  WindowEngine<P>& Engine(long long points) {
-    auto& e = engines[{points, refine}];
-    if (!e)
-      e = std::make_unique<WindowEngine<P>>(problem, global, points, order,
-                                            refine);
-    return *e;
+  bool AdaptiveMode() const { return options_.tolerance.enabled(); }
+
+  // SBP21: the window again at Δt/2; the difference of the two end states
+  // estimates the error of the coarse one, and the fine one is kept.
+  Attempt Doubled(const InitialData& state, const Attempt& coarse) {
+    Attempt fine = Solve(state, 2 * coarse.points - 1, 0.5 * coarse.dt, false);
+    if (!fine.ok()) return fine;
+    for (int c = 0; c < d; ++c) {
+      fine.est_x[c] = std::abs(coarse.x_end[c] - fine.x_end[c]);
+      fine.est_v[c] = std::abs(coarse.v_end[c] - fine.v_end[c]);
+    }
+    return fine;
   }
 
-  // Δt·ω of the global grid at a state, against the operator's limit.
+  // max over components of estimate / (absolute + relative·|value|), the
+  // value being the larger of the window's start and end.
+  double ErrorNorm(const InitialData& state, const Attempt& a) const {
+    const Tolerance& tol = options_.tolerance;
+    double err = 0;
+    for (int c = 0; c < d; ++c) {
+      err = std::max(err, a.est_x[c] / tol.Allowance(std::max(
+                                           std::abs(state.x[c]),
+                                           std::abs(a.end.position[c]))));
+      if (order_ == 2)
+        err = std::max(err, a.est_v[c] / tol.Allowance(std::max(
+                                             std::abs(state.v[c]),
+                                             std::abs(a.end.velocity[c]))));
+    }
+    return err;
+  }
+
+  double InitialStep(const InitialData& state) const {
+    const double span = grid_.t_end - grid_.t_start;
+    const double longest = span / double(options_.window_points - 1);
+    if (options_.initial_step > 0)
+      return std::min(options_.initial_step, longest);
+    if (order_ != 2) return longest / 8;
+    const double omega =
+        FastestFrequency(problem_, state.x.data(), state.v.data());
+    if (!(omega > 0)) return longest / 8;
+    // The estimates scale like (Δt·ω)^q: start near where they meet the
+    // tolerance; the controller corrects the rest.
+    const Tolerance& t = options_.tolerance;
+    const double level = std::max(t.relative, 1e-14);
+    return std::min(longest,
+                    std::pow(level, 1.0 / EstimateOrder(grid_.op)) / omega);
+  }
+
+  // Uniform grid: Δt·ω of the requested grid at a state, against the limit.
   double StepRatio(const InitialData& state) const {
-    if (order != 2) return 0.0;
-    const double dt =
-        (global.t_end - global.t_start) / double(global.points - 1);
-    return dt * FastestFrequency(problem, state.x.data(), state.v.data()) /
-           StabilityLimit(global.op);
+    if (order_ != 2) return 0.0;
+    const double dt = (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
+    return dt * FastestFrequency(problem_, state.x.data(), state.v.data()) /
+           StabilityLimit(grid_.op);
   }
 
   // With options.stabilize: refines the solve grid so that Δt·ω/refine is
@@ -236,157 +256,167 @@ struct Marcher {
   // `at_least_double` (a window came out under-resolved somewhere inside).
   // False when refinement is off or would exceed options.max_refinement.
   bool Refine(const InitialData& state, bool at_least_double) {
-    if (!options.stabilize) return false;
+    if (!options_.stabilize) return false;
     int needed = static_cast<int>(std::ceil(StepRatio(state) / 0.5));
-    if (at_least_double) needed = std::max(needed, 2 * refine);
-    if (needed <= refine || needed > options.max_refinement) return false;
-    refine = needed;
-    out.refinement = std::max(out.refinement, refine);
+    if (at_least_double)
+      needed = std::max(needed, std::min(2 * refine_, options_.max_refinement));
+    if (needed <= refine_ || needed > options_.max_refinement) return false;
+    refine_ = needed;
+    out_.refinement = std::max(out_.refinement, refine_);
     return true;
   }
 
-  // Solves one window from `initial`, falling back to a fresh solve and then
-  // to halving on failure. Emits its nodes except the last (the next window
-  // starts there) and updates `initial` to the hand-off state.
-  bool Window(InitialData& initial, double t0, double t1, long long points,
-              int depth, bool last_of_march) {
-    const bool want_nodes = bool(observer) || options.keep_trajectory;
-    if (depth == 0 && EngineApplies()) {
-      WindowEngine<P>& e = Engine(points);
-      solvers::NewtonOptions newton = options.solve.newton;
-      newton.phase_timings = false;
-      newton.final_residual = false;
-      auto o = e.Solve(initial, newton, want_nodes);
-      if (o.failure.empty()) {
-        Record(t0, t1, points, o.report, depth, o.end);
-        const int r = refine;
-        EmitNodes(
-            last_of_march ? int(points) : int(points) - 1,
-            [&](int i, int c) { return e.x(i * r, c); },
-            [&](int i, int c) { return e.v(i * r, c); });
-        HandOff(initial, o.end, &e, nullptr);
-        return true;
+  // Uniform grid: the window of `points` nodes from global node `first`.
+  // Emits its nodes except the last (the next window starts there) and
+  // updates `state` to the hand-off state.
+  bool Window(InitialData& state, long long first, long long points, int depth,
+              bool last_of_march) {
+    const double t0 = T(first), t1 = T(first + points - 1);
+    const double dt = (t1 - t0) / double((points - 1) * refine_);
+    const Attempt a = Solve(state, int((points - 1) * refine_ + 1), dt, false);
+    if (a.ok()) {
+      Accept(a, state, first, 0.0, last_of_march ? points : points - 1, depth,
+             0.0);
+      return true;
+    }
+    if (!a.split_helps()) {
+      // Δt·ω above the limit: a shorter window has the same Δt, a finer
+      // grid does not. Refine (counted as a fallback) or report. Once the
+      // requested grid is known to be beyond the stability limit, the march
+      // chooses the solve grid, and then one that passes the accuracy check
+      // too; a grid within the limit that fails it is the user's, reported.
+      const bool refinable =
+          a.failure == WindowFailure::kUnderResolved ||
+          (a.failure == WindowFailure::kCoarse && refine_ > 1);
+      if (refinable && Refine(state, true)) {
+        ++out_.fallbacks;
+        return Window(state, first, points, depth, last_of_march);
       }
-      if (!o.split_helps) {
-        // Under-resolved: a shorter window has the same Δt, a finer grid
-        // does not. Refine (counted as a fallback) or report.
-        if (Refine(initial, true)) {
-          ++out.fallbacks;
-          return Window(initial, t0, t1, points, depth, last_of_march);
+      FailAt(t0, t1, a.why, a.residual);
+      return false;
+    }
+    const long long half = (points + 1) / 2;
+    if (depth >= options_.max_split_depth || half < min_points_) {
+      FailAt(t0, t1, a.why, a.residual);
+      return false;
+    }
+    ++out_.fallbacks;
+    return Window(state, first, half, depth + 1, false) &&
+           Window(state, first + half - 1, points - half + 1, depth + 1,
+                  last_of_march);
+  }
+
+  double T(long long index) const {
+    const double dt = (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
+    return index == grid_.points - 1 ? grid_.t_end
+                                     : grid_.t_start + dt * double(index);
+  }
+
+  // Records an accepted window, emits its first `count` nodes (every
+  // refine_-th of the solve grid on a refined uniform grid) and hands off.
+  // The window starts at global node `first` of the uniform grid, or at time
+  // `t_first` under error control (first < 0).
+  void Accept(const Attempt& a, InitialData& state, long long first,
+              double t_first, long long count, int depth, double err) {
+    WindowReport w;
+    const bool adaptive = first < 0;
+    const int stride = adaptive ? 1 : refine_;
+    w.t_start = adaptive ? t_first : T(first);
+    w.t_end = w.t_start + a.dt * double(a.points - 1);
+    w.points = a.points;
+    w.iterations = a.iterations;
+    w.corrections = a.corrections;
+    w.converged = true;
+    w.fallbacks = depth;
+    w.dt = a.dt;
+    w.error_norm = err;
+    for (int c = 0; c < d; ++c) {
+      w.position_error_estimate =
+          std::max(w.position_error_estimate, a.est_x[c]);
+      w.velocity_error_estimate =
+          std::max(w.velocity_error_estimate, a.est_v[c]);
+    }
+    // Per-window reports grow with the number of windows: kept with the
+    // trajectory only, so a streamed march stays O(window) in memory.
+    if (options_.keep_trajectory) out_.windows.push_back(w);
+    ++out_.window_count;
+    out_.iterations += a.iterations;
+    out_.corrections += a.corrections;
+    out_.error_estimate += w.position_error_estimate;
+    out_.min_step = out_.min_step == 0 ? a.dt : std::min(out_.min_step, a.dt);
+    out_.max_step = std::max(out_.max_step, a.dt);
+    if (WantNodes()) {
+      double x[d], v[d];
+      for (long long i = 0; i < count; ++i) {
+        for (int c = 0; c < d; ++c) {
+          x[c] = a.X(int(i * stride), c);
+          v[c] = a.V(int(i * stride), c);
         }
-        Fail(t0, t1, o.failure, o.report.residual_norm);
-        return false;
+        const double t =
+            adaptive
+                ? (i == a.points - 1 ? w.t_end : w.t_start + a.dt * double(i))
+                : T(first + i);
+        Emit(t, x, v);
       }
-      ++out.fallbacks;  // retried below from the default guess, then halved
     }
-    Grid g = global;
-    g.t_start = t0;
-    g.t_end = t1;
-    g.points = (points - 1) * refine + 1;
-    const IvpSolution<double> s = SolveIvp(problem, initial, g, options.solve);
-    if (!s.status.converged) {
-      const long long half = (points + 1) / 2;
-      if (depth >= options.max_split_depth || half < min_points) {
-        Fail(t0, t1, s.status.reason, s.residual_norm);
-        return false;
+    out_.points += count;
+    InitialData start;
+    if (options_.window_observer) start = state;
+    for (int c = 0; c < d; ++c) {
+      const bool corrected = options_.hand_off == HandOff::kCorrected;
+      state.x[c] = corrected ? a.end.position[c] : a.x_end[c];
+      if (order_ == 2) state.v[c] = corrected ? a.end.velocity[c] : a.v_end[c];
+    }
+    if (options_.window_observer)
+      options_.window_observer({w.t_start, w.t_end, a.dt, a.points,
+                                start.x.data(), start.v.data(), a.x_end.data(),
+                                a.v_end.data(), state.x.data(), state.v.data(),
+                                a.est_x.data(), a.est_v.data()});
+  }
+
+  void Emit(double t, const double* x, const double* v) {
+    if (observer_) observer_(t, x, v);
+    if (options_.keep_trajectory) {
+      out_.t.push_back(t);
+      for (int c = 0; c < d; ++c) {
+        xs_.push_back(x[c]);
+        vs_.push_back(v[c]);
       }
-      ++out.fallbacks;
-      const double tm = t0 + (t1 - t0) * double(half - 1) / double(points - 1);
-      return Window(initial, t0, tm, half, depth + 1, false) &&
-             Window(initial, tm, t1, points - half + 1, depth + 1,
-                    last_of_march);
     }
-    solvers::NewtonReport report;
-    report.iterations = s.iterations;
-    Record(t0, t1, points, report, depth, s.corrected);
-    const int r = refine;
-    EmitNodes(
-        last_of_march ? int(points) : int(points) - 1,
-        [&](int i, int c) { return s.x1(i * r, c); },
-        [&](int i, int c) { return s.velocity(i * r, c); });
-    HandOff(initial, s.corrected, nullptr, &s);
-    return true;
   }
 
   // A failed window: the march reports where, why, and the residual left.
-  void Fail(double t0, double t1, const std::string& why, double residual) {
-    out.last_residual = residual;
+  void FailAt(double t0, double t1, const std::string& why, double residual) {
+    out_.last_residual = residual;
+    out_.failed_at = t0;
     std::ostringstream s;
     s << "window [" << t0 << ", " << t1 << "] did not converge: " << why
       << "; last residual ‖F‖∞ = " << residual;
-    out.status = {false, s.str()};
+    out_.status = {false, s.str()};
   }
 
-  void Record(double t0, double t1, long long points,
-              const solvers::NewtonReport& r, int depth,
-              const CorrectedEnd<double>& end) {
-    WindowReport w;
-    w.t_start = t0;
-    w.t_end = t1;
-    w.points = points;
-    w.iterations = r.iterations;
-    w.corrections = r.corrections;
-    w.converged = true;
-    w.fallbacks = depth;
-    w.position_error_estimate = end.position_error_estimate;
-    w.velocity_error_estimate = end.velocity_error_estimate;
-    // Per-window reports grow with Nt/W: kept with the trajectory only, so a
-    // streamed march stays O(window) in memory.
-    if (options.keep_trajectory) out.windows.push_back(w);
-    ++out.window_count;
-    out.iterations += r.iterations;
-    out.corrections += r.corrections;
-    out.error_estimate += w.position_error_estimate;
+  static std::string Text(double v) {
+    std::ostringstream s;
+    s.precision(3);
+    s << v;
+    return s.str();
   }
 
-  // The next window's initial data: the corrected end state (default) or the
-  // naive (x_N, (Dx)_N) from the engine or the fresh solve.
-  void HandOff(InitialData& initial, const CorrectedEnd<double>& end,
-               const WindowEngine<P>* e, const IvpSolution<double>* s) const {
-    for (int c = 0; c < d; ++c) {
-      if (options.hand_off == HandOff::kCorrected) {
-        initial.x[c] = end.position[c];
-        if (order == 2) initial.v[c] = end.velocity[c];
-      } else if (e) {
-        const int n = e->D().points() - 1;
-        initial.x[c] = e->x(n, c);
-        if (order == 2) initial.v[c] = e->end_velocity(c);
-      } else {
-        const int n = s->points() - 1;
-        initial.x[c] = s->x1(n, c);
-        if (order == 2) initial.v[c] = s->velocity(n, c);
-      }
-    }
-  }
+ public:
+  std::vector<double> xs_, vs_;  // kept nodes, node-major
 
-  // Emits the first `count` nodes of a solved window (position and velocity
-  // of DOF c at node i through the accessors), unless nobody wants them.
-  template <class X, class V>
-  void EmitNodes(int count, const X& x_of, const V& v_of) {
-    if (!observer && !options.keep_trajectory) return;
-    double x[d], v[d];
-    for (int i = 0; i < count; ++i) {
-      for (int c = 0; c < d; ++c) {
-        x[c] = x_of(i, c);
-        v[c] = v_of(i, c);
-      }
-      Emit(x, v);
-    }
-  }
-
-  void Emit(const double* x, const double* v) {
-    const double dt =
-        (global.t_end - global.t_start) / double(global.points - 1);
-    const double t = global.t_start + dt * double(emitted++);
-    if (observer) observer(t, x, v);
-    if (options.keep_trajectory) {
-      out.t.push_back(t);
-      for (int c = 0; c < d; ++c) {
-        xs.push_back(x[c]);
-        vs.push_back(v[c]);
-      }
-    }
-  }
+ private:
+  const P& problem_;
+  const Grid& grid_;
+  const MarchOptions& options_;
+  const NodeObserver& observer_;
+  MarchResult& out_;
+  int order_;
+  int min_points_;
+  WindowSolver<P> solver_;
+  int refine_ = 1;  // uniform grid: solve grid = requested grid refined
+  std::string last_why_;
+  double last_residual_ = NAN;
 };
 
 }  // namespace detail
@@ -397,45 +427,43 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
                      const NodeObserver& observer = {}) {
   constexpr int d = P::kDim;
   const auto start = std::chrono::steady_clock::now();
-  // Validates the global grid (operator, points, interval) once.
-  const auto global =
-      sbp::MakeOperator<double>(grid.op, grid.points, grid.t_start, grid.t_end);
-  const int min_points = global.min_points();
+  const bool adaptive = options.tolerance.enabled();
+  const Tolerance& tol = options.tolerance;
+  if (adaptive &&
+      !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&
+        tol.absolute >= 0 && tol.relative >= 0))
+    throw std::invalid_argument(
+        "tolerance must be finite and non-negative (absolute, relative), got "
+        "(" +
+        std::to_string(tol.absolute) + ", " + std::to_string(tol.relative) +
+        ")");
+  // Validates the grid (operator, points, interval) once; under error
+  // control the operator's minimum stands in for the points.
+  const int min_points = sbp::Table(grid.op).min_points;
+  const auto global = sbp::MakeOperator<double>(
+      grid.op, adaptive ? min_points : grid.points, grid.t_start, grid.t_end);
   if (options.window_points < min_points)
     throw std::invalid_argument(
         "window of " + std::to_string(options.window_points) +
-        " points is "
-        "below the minimum of " +
-        grid.op + " (" + std::to_string(min_points) +
-        "); use --slab-points >= " + std::to_string(min_points) +
-        " or 0 for one global solve");
+        " points is below the minimum of " + grid.op + " (" +
+        std::to_string(min_points) + "); use --slab-points >= " +
+        std::to_string(min_points) + " or 0 for one global solve");
   MarchResult out;
   InitialData state = initial;
   const int order = detail::CheckInitialData(problem, state);
-  detail::Marcher<P> m{problem, options, grid, observer, out, min_points,
-                       order,   0,       {},   {},       1,   {}};
-  m.Refine(state, false);  // planned from the initial state, not a fallback
-  const long long intervals = grid.points - 1;
-  const long long per_window = options.window_points - 1;
-  long long done = 0;
-  bool ok = true;
-  while (ok && done < intervals) {
-    long long take = std::min(per_window, intervals - done);
-    // Never leave a remainder shorter than the operator allows: absorb it.
-    if (intervals - done - take > 0 && intervals - done - take < min_points - 1)
-      take = intervals - done;
-    const double t0 = global.t(int(done)), t1 = global.t(int(done + take));
-    ok = m.Window(state, t0, t1, take + 1, 0, done + take == intervals);
-    done += take;
+  if (order == 1) state.v.clear();
+  detail::Marcher<P> m(problem, grid, options, observer, out, order,
+                       min_points);
+  const bool ok = adaptive ? m.Adaptive(state) : m.Uniform(state);
+  if (ok) {
+    std::string note = adaptive ? "error control" : "";
+    if (out.refinement > 1)
+      note = "on a grid refined x" + std::to_string(out.refinement) +
+             " (the requested step exceeds the stability limit of " + grid.op +
+             ")";
+    out.status = {true, "all windows converged" +
+                            (note.empty() ? "" : " (" + note + ")")};
   }
-  if (ok)
-    out.status = {true, out.refinement == 1
-                            ? "all windows converged"
-                            : "all windows converged on a grid refined x" +
-                                  std::to_string(out.refinement) +
-                                  " (the requested step exceeds the stability "
-                                  "limit of " +
-                                  grid.op + ")"};
   out.end_position = state.x;
   out.end_velocity = state.v;
   if (options.keep_trajectory) {
@@ -444,8 +472,8 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
     out.v.resize(n, d);
     for (Eigen::Index i = 0; i < n; ++i)
       for (int c = 0; c < d; ++c) {
-        out.x(i, c) = m.xs[i * d + c];
-        out.v(i, c) = m.vs[i * d + c];
+        out.x(i, c) = m.xs_[i * d + c];
+        out.v(i, c) = m.vs_[i * d + c];
       }
   }
   out.seconds =

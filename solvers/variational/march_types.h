@@ -8,10 +8,24 @@
 #include <vector>
 
 #include "solvers/variational/ivp_types.h"
+#include "solvers/variational/step_control.h"
 
 namespace vivp {
 
 enum class HandOff { kCorrected, kNaive };
+
+// One accepted window as seen by a WindowObserver: where it started, its end
+// node (x_N, (Dx)_N), the state it hands off and its embedded estimates, per
+// component (d values each; velocities empty for a first-order system).
+struct WindowSample {
+  double t_start = 0, t_end = 0, dt = 0;
+  int points = 0;
+  const double *x0, *v0;                // initial data of the window
+  const double *x_end, *v_end;          // x_N and (Dx)_N
+  const double *handoff_x, *handoff_v;  // the next window's initial data
+  const double *est_x, *est_v;          // embedded estimates of x_N, (Dx)_N
+};
+using WindowObserver = std::function<void(const WindowSample &)>;
 
 struct MarchOptions {
   // Default by measurement (bench/march_bench, SBP42, Nt = 2^18, points per
@@ -31,6 +45,25 @@ struct MarchOptions {
   // march stops with the under-resolution reason.
   bool stabilize = true;
   int max_refinement = 64;
+  // Error control. Enabled (absolute or relative > 0): the march chooses
+  // each window's Δt from the windows' embedded error estimates so that the
+  // local error of every node it returns stays below absolute +
+  // relative·|value| (positions and velocities); grid.points is then not
+  // used, and the nodes are not uniform in time. Disabled: the uniform grid
+  // of grid.points nodes.
+  Tolerance tolerance;
+  // Error control: the first window's Δt; 0 chooses it from the fastest
+  // frequency of the initial state.
+  double initial_step = 0;
+  // Error control: give up (reported, with the time) when a run would need
+  // more than this many nodes.
+  long long max_points = 100'000'000;
+  // Uniform grid: a window whose nodes deviate from the predictor by more
+  // than this fraction of the solution's size is reported as
+  // under-resolved (window_solve.h, check 3).
+  double max_relative_deviation = 1e-2;
+  // Sees every accepted window (studies of the error estimates).
+  WindowObserver window_observer;
 };
 
 struct WindowReport {
@@ -42,16 +75,23 @@ struct WindowReport {
   bool converged = false;
   double position_error_estimate = 0;  // |M⁻¹λ4|∞
   double velocity_error_estimate = 0;  // |(Dx)_N − M⁻¹(−λ3)|∞
+  double dt = 0;                       // node spacing of the solve grid
+  double error_norm = 0;  // error control: the estimates over the tolerance
 };
 
 struct MarchResult {
   Status status;
-  std::vector<double> t;  // stitched grid (if kept)
+  std::vector<double> t;  // time of every node (if kept); error control:
+                          // not uniform
   Eigen::MatrixXd x, v;   // positions and D x per node (if kept)
   std::vector<double> end_position, end_velocity;  // handed-off final state
   std::vector<WindowReport> windows;  // one per window, if keep_trajectory
   long long window_count = 0;
-  int fallbacks = 0;
+  long long points = 0;    // nodes returned (uniform grid: grid.points)
+  int fallbacks = 0;       // windows solved again: split, refactored, refined
+  int rejected = 0;        // error control: windows whose error was too large
+  int check_failures = 0;  // windows that failed an a-posteriori check
+  double min_step = 0, max_step = 0;  // smallest and largest Δt used
   int refinement = 1;   // solve grid = requested grid refined this many times
   int iterations = 0;   // Jacobian factorizations over all windows
   int corrections = 0;  // solves with a factorization over all windows
@@ -59,10 +99,14 @@ struct MarchResult {
   // On failure: ‖F‖∞ of the failing window's system at the last iterate
   // (NaN if it was not finite or not evaluated); also named in the reason.
   double last_residual = std::numeric_limits<double>::quiet_NaN();
+  // On failure: the start of the window that failed (NaN on success).
+  double failed_at = std::numeric_limits<double>::quiet_NaN();
+  long predictor_steps = 0;  // Dormand–Prince steps of the window starts
   double seconds = 0;
 };
 
 // Called with (t, x, v) of every node, in order, each node once.
-using NodeObserver = std::function<void(double, const double*, const double*)>;
+using NodeObserver =
+    std::function<void(double, const double *, const double *)>;
 
 }  // namespace vivp

@@ -1,0 +1,187 @@
+// One time-slab window (march.h) solved by Newton on the reduced system, with
+// its operators, scratch space and Jacobian factorization kept from window to
+// window.
+//
+// The Lagrangian does not depend on t, so every window of the same length has
+// the same discrete equations up to the initial data. A linear problem is
+// thus factored once and each window costs back-substitutions and residuals
+// (the chord steps of solvers::Newton with a FactorCache); a nonlinear one
+// starts each window from the previous window's factorization and refactors
+// only when the chord steps stop contracting. Under error control the step
+// changes from window to window (SetStep): the operators are rebuilt, and the
+// last factorization is still a usable chord start when the step changed by
+// a few per cent.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "solvers/variational/solve_ivp.h"
+
+namespace vivp::detail {
+
+template <class P>
+class WindowEngine {
+ public:
+  static constexpr int d = P::kDim;
+  using State = std::array<double, d>;
+
+  // A window of `points` nodes spaced `dt`: the grid [0, (points − 1)·dt].
+  WindowEngine(const P& problem, const std::string& op, double sigma0,
+               int points, double dt, int order)
+      : problem_(problem),
+        op_(op),
+        sigma0_(sigma0),
+        dbar_(MakeDbar(op, points, dt, sigma0)),
+        system_(problem, dbar_, State{}, State{}, order),
+        y_(system_.size(), 0.0) {}
+
+  const sbp::Operator<double>& D() const { return dbar_.base(); }
+  int points() const { return dbar_.points(); }
+  double dt() const { return dbar_.base().dt(); }
+  int order() const { return system_.order(); }
+
+  // The same number of points at another spacing (error control). The
+  // factorization is kept as a chord start only within 5 % of its step: the
+  // Jacobian's blocks scale like Δt and 1/Δt, and chord steps on one from a
+  // very different step are so short that the stopping rule (a correction
+  // at round-off) fires before they converge (measured: Kepler e = 0.9 with
+  // the factorization of a pericentre window, Δt = 6e-5, reused at
+  // apocentre, Δt = 1.2e-2: "converged" with the Newton start's error).
+  void SetStep(double dt) {
+    if (dt == this->dt()) return;
+    if (std::abs(dt / this->dt() - 1.0) > 0.05) cache_.valid = false;
+    dbar_ = MakeDbar(op_, points(), dt, sigma0_);
+    omega_end_ = -1.0;
+  }
+
+  // The last solved window: position and velocity D x of DOF c at node i.
+  double x(int i, int c) const { return xc_[c][i]; }
+  double v(int i, int c) const { return v_[c][i]; }
+
+  struct Outcome {
+    solvers::NewtonReport report;
+    CorrectedEnd<double> end;  // the hand-off state
+    State x_end{}, v_end{};    // x_N and (Dx)_N
+    // Per component: |M⁻¹λ4| and |(Dx)_N − M⁻¹(−λ3)|, the embedded error
+    // estimates of x_N and (Dx)_N (first order: |C⁻¹λ3| and 0).
+    State est_x{}, est_v{};
+    std::string failure;      // empty on success
+    bool split_helps = true;  // false: a shorter window has the same Δt
+  };
+
+  // Solves the window from (x0, v0), Newton started at `guess` (positions,
+  // node-major, points·d values) with λ3 = lambda3 and λ4 = 0. `fresh`
+  // refactors at the start instead of taking chord steps on the previous
+  // window's factorization. On success the nodes are in x(i, c), and the
+  // velocities D x in v(i, c) if `velocities` is set.
+  Outcome Solve(const State& x0, const State& v0, const double* guess,
+                const double* lambda3, const solvers::NewtonOptions& newton,
+                bool fresh, bool velocities) {
+    Outcome o;
+    system_.SetInitial(x0, v0);
+    const auto& D = dbar_.base();
+    const int n = D.points();
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < d; ++c) y_[system_.X(i, c)] = guess[i * d + c];
+    for (int c = 0; c < d; ++c) {
+      y_[system_.Lambda3(c)] = lambda3[c];
+      if (order() == 2) y_[system_.Lambda4(c)] = 0.0;
+    }
+    if (fresh) cache_.valid = false;
+    o.report = solvers::Newton<double>(system_, y_, newton, {}, &cache_);
+    if (!o.report.converged) {
+      cache_.valid = false;
+      o.failure = o.report.reason;
+      return o;
+    }
+    for (int c = 0; c < d; ++c) {
+      xc_[c].resize(n);
+      for (int i = 0; i < n; ++i) xc_[c][i] = y_[system_.X(i, c)];
+    }
+    double xe[2][d], ve[2][d];
+    for (int k = 0; k < 2; ++k) {
+      const int i = k == 0 ? 0 : n - 1;
+      for (int c = 0; c < d; ++c) {
+        xe[k][c] = xc_[c][i];
+        ve[k][c] = D.ApplyRow(i, xc_[c].data());
+      }
+    }
+    double omega_end = 0.0;
+    if (order() == 2) {
+      // ω at the window's start: when the window starts from this engine's
+      // last hand-off, it is the last window's ω at its end (the same time,
+      // and the same state up to the multiplier correction, which is the
+      // size of the error estimate). Only the first window, and a window
+      // after a fallback, evaluates it: one pointwise Hessian per window
+      // instead of two.
+      const bool continues =
+          omega_end_ >= 0.0 && x0 == handed_x_ && v0 == handed_v_;
+      const double omega_start =
+          continues ? omega_end_ : FastestFrequency(problem_, xe[0], ve[0]);
+      omega_end = FastestFrequency(problem_, xe[1], ve[1]);
+      const Grid grid{.op = op_, .points = n, .t_end = D.t_end()};
+      std::string why = UnderResolution(grid, omega_start, omega_end);
+      if (!why.empty()) {
+        omega_end_ = -1.0;
+        o.failure = std::move(why);
+        o.split_helps = false;
+        return o;
+      }
+    }
+    double l3[d], l4[d];
+    for (int c = 0; c < d; ++c) {
+      l3[c] = y_[system_.Lambda3(c)];
+      l4[c] = order() == 2 ? y_[system_.Lambda4(c)] : 0.0;
+    }
+    o.end = CorrectEnd<double>(problem_, order(), xe[1], ve[1], l3,
+                               order() == 2 ? l4 : nullptr);
+    for (int c = 0; c < d; ++c) {
+      o.x_end[c] = xe[1][c];
+      o.v_end[c] = ve[1][c];
+      o.est_x[c] = std::abs(o.end.position[c] - xe[1][c]);
+      o.est_v[c] = order() == 2 ? std::abs(ve[1][c] - o.end.velocity[c]) : 0;
+    }
+    omega_end_ = omega_end;
+    for (int c = 0; c < d; ++c) {
+      handed_x_[c] = o.end.position[c];
+      handed_v_[c] = order() == 2 ? o.end.velocity[c] : 0.0;
+    }
+    if (velocities) {
+      for (int c = 0; c < d; ++c) {
+        v_[c].resize(n);
+        D.Apply(std::span<const double>(xc_[c]), std::span<double>(v_[c]));
+      }
+    }
+    return o;
+  }
+
+  long long factorizations() const { return cache_.factorizations; }
+
+ private:
+  static sbp::RegularizedOperator<double> MakeDbar(const std::string& op,
+                                                   int points, double dt,
+                                                   double sigma0) {
+    return sbp::RegularizedOperator<double>(
+        sbp::MakeOperator<double>(op, points, 0.0, dt * double(points - 1)),
+        sigma0);
+  }
+
+  const P& problem_;
+  std::string op_;
+  double sigma0_;
+  sbp::RegularizedOperator<double> dbar_;
+  action::ReducedSystem<P, double> system_;  // refers to dbar_
+  std::vector<double> y_;
+  solvers::FactorCache<double> cache_;
+  // The last window's corrected end state (the next window's initial data
+  // unless a fallback intervened) and ω there; ω < 0: none yet.
+  State handed_x_{}, handed_v_{};
+  double omega_end_ = -1.0;
+  std::vector<double> xc_[d], v_[d];
+};
+
+}  // namespace vivp::detail
