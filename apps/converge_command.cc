@@ -18,6 +18,7 @@ struct ConvergeOptions {
   std::string problem;
   std::string op = "sbp42";
   std::string points = "16,32,64,128,256,512";
+  std::string tolerances;  // error control: a study over tolerances
   std::string solver = "newton";
   double t_end = 1.0;
   std::string json;
@@ -52,6 +53,34 @@ std::vector<long long> ParsePoints(const std::string& list) {
   return out;
 }
 
+std::vector<double> ParseTolerances(const std::string& list) {
+  std::vector<double> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size() ||
+        !std::isfinite(v) || !(v > 0) || !(v < 1))
+      throw UsageError(
+          "--tolerance: expected a comma-separated list of tolerances in (0, "
+          "1) such as 1e-4,1e-6,1e-8, got '" +
+          list + "'");
+    out.push_back(v);
+  }
+  if (out.empty())
+    throw UsageError(
+        "--tolerance: expected at least one tolerance, such as "
+        "1e-6");
+  return out;
+}
+
+nlohmann::json TrackingJson(const ToleranceTracking& t) {
+  return {{"slope", JsonNumber(t.slope)},
+          {"ratio_min", JsonNumber(t.min_ratio)},
+          {"ratio_max", JsonNumber(t.max_ratio)}};
+}
+
 nlohmann::json OrdersJson(const ConvergenceOrders& o) {
   return {{"x", JsonNumber(o.x)},
           {"v", JsonNumber(o.v)},
@@ -67,16 +96,118 @@ Path ParseSolver(const std::string& s) {
                    "' is not a solver; valid: newton, full-newton, ceres-lm");
 }
 
+void WriteJson(const ConvergeOptions& o, const nlohmann::json& j) {
+  if (o.json == "-") {
+    std::cout << j.dump(1) << "\n";
+  } else {
+    std::ofstream f(o.json);
+    f << j.dump(1) << "\n";
+    if (!f) throw std::runtime_error("cannot write " + o.json);
+  }
+}
+
+// `vivp converge --tolerance LIST`: the march under error control for each
+// tolerance, the achieved errors, the points used and the time.
+int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
+                         const Grid& grid, const SolveOptions& options) {
+  const std::vector<double> tolerances = ParseTolerances(o.tolerances);
+  const long long window = o.slab_points > 0 ? o.slab_points : 48;
+  const ConvergenceStudy study =
+      RunToleranceStudy(problem, grid, tolerances, options, window);
+  std::ostream& human = o.json == "-" ? std::cerr : std::cout;
+  human << problem.name << " (" << problem.description << "), " << o.op
+        << ", solver " << o.solver << ", t_end = " << o.t_end
+        << ", error control in windows of " << window
+        << " points (tolerance = absolute = relative)\n";
+  human << std::setw(9) << "tol" << std::setw(10) << "points" << std::setw(9)
+        << "windows" << std::setw(9) << "rejected" << std::setw(11) << "err x"
+        << std::setw(11) << "err v" << std::setw(11) << "max err x"
+        << std::setw(10) << "seconds\n";
+  bool all_converged = true;
+  for (const auto& r : study.rows) {
+    human << std::scientific << std::setprecision(1) << std::setw(9)
+          << r.tolerance << std::defaultfloat << std::setw(10) << r.points
+          << std::setw(9) << r.windows << std::setw(9) << r.rejected
+          << std::scientific << std::setprecision(2) << std::setw(11)
+          << r.err_x_corrected << std::setw(11) << r.err_p_corrected
+          << std::setw(11) << r.max_error << std::defaultfloat << std::setw(10)
+          << std::setprecision(3) << r.seconds
+          << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
+    all_converged = all_converged && r.converged;
+  }
+  auto tracking = [](const ToleranceTracking& t) {
+    if (std::isnan(t.slope)) return std::string("n/a (fewer than two rows)");
+    std::ostringstream s;
+    s << "slope " << std::fixed << std::setprecision(2) << t.slope
+      << ", error/tolerance from " << std::scientific << std::setprecision(1)
+      << t.min_ratio << " to " << t.max_ratio;
+    return s.str();
+  };
+  human << "achieved end error against the tolerance:      "
+        << tracking(study.tracking)
+        << "\nlargest node error against the tolerance:      "
+        << tracking(study.tracking_max) << "\n";
+  if (!o.json.empty()) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& r : study.rows)
+      rows.push_back({{"tolerance", r.tolerance},
+                      {"points", r.points},
+                      {"windows", r.windows},
+                      {"rejected", r.rejected},
+                      {"fallbacks", r.fallbacks},
+                      {"err_x_corrected", JsonNumber(r.err_x_corrected)},
+                      {"err_p_corrected", JsonNumber(r.err_p_corrected)},
+                      {"max_error", JsonNumber(r.max_error)},
+                      {"iterations", r.iterations},
+                      {"seconds", r.seconds},
+                      {"converged", r.converged},
+                      {"status", r.reason}});
+    WriteJson(o, {{"problem", problem.name},
+                  {"operator", o.op},
+                  {"solver", o.solver},
+                  {"t_end", o.t_end},
+                  {"slab_points", window},
+                  {"rows", rows},
+                  {"tracking", TrackingJson(study.tracking)},
+                  {"tracking_max", TrackingJson(study.tracking_max)}});
+  }
+  if (!all_converged) {
+    std::cerr << "vivp: some runs did not converge (see the table)\n";
+    return 1;
+  }
+  return 0;
+}
+
 int RunConverge(const ConvergeOptions& o) {
   if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
   const NamedProblem& problem = FindProblem(o.problem);
-  const std::vector<long long> points = ParsePoints(o.points);
   SolveOptions options;
   options.path = ParseSolver(o.solver);
   options.extended_residual = o.extended_residual;
   Grid grid;
   grid.op = o.op;
   grid.t_end = o.t_end;
+  if (options.path == Path::kCeresLm &&
+      (o.slab_points > 0 || !o.tolerances.empty()))
+    throw UsageError(
+        "--solver ceres-lm solves globally and cannot march; use --solver "
+        "newton with --slab-points or --tolerance");
+  if (!o.tolerances.empty())
+    return RunToleranceConverge(o, problem, grid, options);
+  const std::vector<long long> points = ParsePoints(o.points);
+  // Every grid is checked before any work, so that a bad size is the
+  // user's error (exit 2), not a study cut short.
+  for (long long n : points) {
+    try {
+      sbp::MakeOperator<double>(o.op, n, 0.0, o.t_end);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--points: ") + e.what());
+    }
+    if (o.slab_points > n)
+      throw UsageError("--slab-points " + std::to_string(o.slab_points) +
+                       " exceeds the grid of " + std::to_string(n) +
+                       " points; use --slab-points <= " + std::to_string(n));
+  }
   const ConvergenceStudy study =
       RunConvergence(problem, grid, points, options, 1e-13, o.slab_points);
 
@@ -149,13 +280,7 @@ int RunConverge(const ConvergeOptions& o) {
         {"rows", rows},
         {"orders", OrdersJson(study.orders)},
         {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
-    if (o.json == "-") {
-      std::cout << j.dump(1) << "\n";
-    } else {
-      std::ofstream f(o.json);
-      f << j.dump(1) << "\n";
-      if (!f) throw std::runtime_error("cannot write " + o.json);
-    }
+    WriteJson(o, j);
   }
   if (!all_converged) {
     std::cerr << "vivp: some solves did not converge (see the table)\n";
@@ -179,8 +304,15 @@ Runner AddConvergeCommand(CLI::App& app) {
   cmd->add_option("--operator", o->op, "SBP operator")
       ->check(CLI::IsMember(names))
       ->capture_default_str();
-  cmd->add_option("--points", o->points, "comma-separated grid sizes Nt")
-      ->capture_default_str();
+  CLI::Option* points =
+      cmd->add_option("--points", o->points, "comma-separated grid sizes Nt")
+          ->capture_default_str();
+  cmd->add_option("--tolerance", o->tolerances,
+                  "error control: comma-separated tolerances (absolute = "
+                  "relative), a study of the achieved error, points and time "
+                  "per tolerance; marches in windows of --slab-points "
+                  "(default 48)")
+      ->excludes(points);
   cmd->add_option("--solver", o->solver, "newton | full-newton | ceres-lm")
       ->capture_default_str();
   cmd->add_option("--t-end", o->t_end, "end time (start is 0)")

@@ -149,13 +149,15 @@ class ReducedSystem {
       const LocalMap<Real> map = MakeLocalMap(dbar_, i);
       for (int ea = 0; ea < map.size; ++ea) {
         const auto& ra = map.entries[ea];
+        // Row entry a's weights applied once: (wx_a, wv_a)·A, d × 2d.
+        const Eigen::Matrix<Real, d, 2 * d> row =
+            ra.wx * a.template topRows<d>() +
+            ra.wv * a.template bottomRows<d>();
         for (int eb = 0; eb < map.size; ++eb) {
           const auto& cb = map.entries[eb];
           const Eigen::Matrix<Real, d, d> block =
-              ra.wx * cb.wx * a.template block<d, d>(0, 0) +
-              ra.wx * cb.wv * a.template block<d, d>(0, d) +
-              ra.wv * cb.wx * a.template block<d, d>(d, 0) +
-              ra.wv * cb.wv * a.template block<d, d>(d, d);
+              cb.wx * row.template leftCols<d>() +
+              cb.wv * row.template rightCols<d>();
           for (int r = 0; r < d; ++r)
             for (int s = 0; s < d; ++s)
               if (block(r, s) != Real(0))

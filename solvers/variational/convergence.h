@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,14 @@ struct ConvergenceRow {
                                // marching: error of the handed-off velocity)
   double error_estimate = 0;   // |M⁻¹λ4|∞, the built-in estimate of err_x
   int iterations = 0;
-  int fallbacks = 0;  // marching: windows split because Newton failed
+  int fallbacks = 0;  // marching: windows solved again (split, refactored)
+  // Error control (RunToleranceStudy): the tolerance (absolute = relative),
+  // the largest position error over every returned node, the windows and
+  // how many were rejected. NaN / 0 otherwise.
+  double tolerance = std::numeric_limits<double>::quiet_NaN();
+  double max_error = std::numeric_limits<double>::quiet_NaN();
+  long long windows = 0;
+  int rejected = 0;
   double seconds = 0;
   bool converged = false;
   std::string reason;
@@ -36,10 +44,21 @@ struct ConvergenceOrders {
   double x = 0, v = 0, x_corrected = 0, p_corrected = 0;
 };
 
+// How the achieved error of a tolerance study follows the tolerance: the
+// fitted slope of log(error) against log(tolerance) (1: proportional) and
+// the range of error / tolerance, over the converged rows.
+struct ToleranceTracking {
+  double slope = std::numeric_limits<double>::quiet_NaN();
+  double min_ratio = std::numeric_limits<double>::quiet_NaN();
+  double max_ratio = std::numeric_limits<double>::quiet_NaN();
+};
+
 struct ConvergenceStudy {
   std::vector<ConvergenceRow> rows;
   ConvergenceOrders orders;          // against 1/Nt
   ConvergenceOrders orders_true_dt;  // against 1/(Nt − 1)
+  ToleranceTracking tracking;        // RunToleranceStudy: end error
+  ToleranceTracking tracking_max;    // RunToleranceStudy: max node error
 };
 
 // Fits the orders of the converged rows (a solve that did not converge has
@@ -64,6 +83,32 @@ inline void FitOrders(ConvergenceStudy& study, double floor) {
   };
   fit(h, study.orders);
   fit(ht, study.orders_true_dt);
+}
+
+// The tracking of a tolerance study (rows with a tolerance), over the
+// converged rows; errors at or below `floor` are round-off and left out.
+inline void FitTracking(ConvergenceStudy& study, double floor) {
+  auto track = [&](auto error_of) {
+    ToleranceTracking t;
+    std::vector<double> tol, err;
+    for (const auto& r : study.rows) {
+      const double e = error_of(r);
+      if (!r.converged || !(e > floor)) continue;
+      tol.push_back(r.tolerance);
+      err.push_back(e);
+      const double ratio = e / r.tolerance;
+      t.min_ratio =
+          std::isnan(t.min_ratio) ? ratio : std::min(t.min_ratio, ratio);
+      t.max_ratio =
+          std::isnan(t.max_ratio) ? ratio : std::max(t.max_ratio, ratio);
+    }
+    t.slope = FitPowerLaw(tol, err, floor).order;
+    return t;
+  };
+  study.tracking =
+      track([](const ConvergenceRow& r) { return r.err_x_corrected; });
+  study.tracking_max =
+      track([](const ConvergenceRow& r) { return r.max_error; });
 }
 
 }  // namespace vivp

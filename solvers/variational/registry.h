@@ -46,6 +46,17 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
                         const SolveOptions& options, long long slab_points,
                         const ExactState& exact);
 
+// Marches `problem` under error control for every tolerance (absolute and
+// relative both set to it) in windows of `window_points`, and measures the
+// achieved errors against the exact solution: of the handed-off end state
+// (err_x_corrected, err_p_corrected for the velocity), and the largest over
+// every returned node (max_error); `points` is the number of nodes used.
+ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
+                                   const std::vector<double>& tolerances,
+                                   const SolveOptions& options,
+                                   long long window_points,
+                                   double round_off_floor = 1e-13);
+
 // Solves `problem` on every grid size and measures the errors at t_end; with
 // slab_points > 0 it marches in windows of that many points instead.
 ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
