@@ -199,11 +199,22 @@ class ProgressLine {
   bool printed_ = false;
 };
 
-// gnuplot scripts next to the PNGs; they read the CSV files directly.
+// gnuplot scripts next to the PNGs; they read the CSV files directly. A
+// plot that cannot be drawn is a warning (in `warnings`), not a failure of
+// the run: the data and the scripts are written either way.
 std::vector<std::string> WritePlots(const fs::path& dir, const scene::Scene& s,
                                     const scene::RunLayout& layout,
-                                    const std::vector<ColumnStats>& stats) {
+                                    const std::vector<ColumnStats>& stats,
+                                    std::vector<std::string>& warnings) {
   std::vector<std::string> files;
+  auto render = [&](plot::Figure& fig, const std::string& png) {
+    try {
+      fig.Render();
+      files.push_back(png);
+    } catch (const std::exception& e) {
+      warnings.push_back(e.what());
+    }
+  };
   const int d = layout.dof;
   auto column = [&](const std::string& name) {
     for (std::size_t k = 0; k < layout.columns.size(); ++k)
@@ -247,8 +258,7 @@ std::vector<std::string> WritePlots(const fs::path& dir, const scene::Scene& s,
             << "'";
     }
     g << "\n";
-    fig.Render();
-    files.push_back("trajectory.png");
+    render(fig, "trajectory.png");
   }
   auto series =
       [&](const std::string& stem, const std::string& ylabel,
@@ -283,8 +293,7 @@ std::vector<std::string> WritePlots(const fs::path& dir, const scene::Scene& s,
           fig.script() << " with lines lw 2 title '" << curves[k].second << "'";
         }
         fig.script() << "\n";
-        fig.Render();
-        files.push_back(stem + ".png");
+        render(fig, stem + ".png");
       };
   for (const auto& diag : s.output.diagnostics) {
     if (diag == "energy") {
@@ -373,8 +382,15 @@ int RunScene(const RunCommandOptions& o) {
   sink.Finish();
   std::vector<std::string> files = {"trajectory.csv", "summary.json"};
   if (!sink.layout().columns.empty()) files.push_back("diagnostics.csv");
-  for (const auto& f : WritePlots(staging, s, sink.layout(), sink.stats()))
-    files.push_back(f);
+  std::vector<std::string> warnings;
+  if (sink.nodes() > 1) {
+    for (const auto& f :
+         WritePlots(staging, s, sink.layout(), sink.stats(), warnings))
+      files.push_back(f);
+  } else {
+    warnings.push_back("no plots: the run returned " +
+                       std::to_string(sink.nodes()) + " nodes");
+  }
   const double total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -384,7 +400,7 @@ int RunScene(const RunCommandOptions& o) {
       {"scene", scene::SceneJson(s)},
       {"method", r.method},
       {"operator", s.variational() ? nlohmann::json(s.method.op) : nullptr},
-      {"points", s.points},
+      {"points", r.points},
       {"status", {{"converged", r.converged}, {"message", r.status}}},
       {"solver", r.solver},
       {"seconds", {{"solve", r.seconds}, {"total", total}}},
@@ -401,12 +417,20 @@ int RunScene(const RunCommandOptions& o) {
   if (r.solver.contains("windows"))
     human << ", " << r.solver["windows"] << " windows, "
           << r.solver["fallbacks"] << " fallbacks";
-  human << ", " << Short(r.seconds) << " s\n  " << s.points << " points on ["
-        << Short(s.t_start) << ", " << Short(s.t_end)
-        << "]; end state x = " << Vector(r.end_x);
-  if (s.order == 2) human << ", v = " << Vector(r.end_v);
+  human << ", " << Short(r.seconds) << " s\n  " << r.points << " points on ["
+        << Short(s.t_start) << ", " << Short(s.t_end) << "]";
+  if (r.converged || sink.nodes() > 0) {
+    // A failed march returns the state it had handed on last.
+    human << (r.converged ? "; end state x = " : "; last state x = ")
+          << Vector(r.end_x);
+    if (s.order == 2) human << ", v = " << Vector(r.end_v);
+  }
+  if (!r.converged && sink.nodes() > 0)
+    human << " (returned up to t = " << Short(sink.last_t()) << ")";
   human << "\n";
-  if (sink.layout().reference_x >= 0) {
+  // The comparison with the reference needs at least one node (a march that
+  // failed in its first window returns none).
+  if (sink.layout().reference_x >= 0 && !sink.end_reference_.empty()) {
     const double* ref = sink.end_reference_.data();
     nlohmann::json e = {{"kind", s.output.reference},
                         {"description", r.solver["reference"]},
@@ -429,13 +453,14 @@ int RunScene(const RunCommandOptions& o) {
     if (name.rfind("x_reference", 0) == 0 || name.rfind("v_reference", 0) == 0)
       continue;
     diagnostics[name] = sink.stats()[k].Json();
-    if (name == "energy" || name == "angular_momentum")
+    if ((name == "energy" || name == "angular_momentum") && sink.nodes() > 0)
       human << "  " << name << ": " << Short(sink.stats()[k].first) << " → "
             << Short(sink.stats()[k].last) << " (max change "
             << Short(sink.stats()[k].Json()["max_change"].get<double>())
             << ")\n";
   }
   summary["diagnostics"] = diagnostics;
+  summary["warnings"] = warnings;
   {
     std::ofstream f(staging / "summary.json");
     f << summary.dump(1) << "\n";
@@ -447,6 +472,7 @@ int RunScene(const RunCommandOptions& o) {
   human << "  wrote " << out.string() << "/:";
   for (const auto& f : files) human << " " << f;
   std::cout << human.str() << "\n";
+  for (const auto& w : warnings) std::cerr << "vivp: warning: " << w << "\n";
   if (!r.converged) {
     std::cerr << "vivp: the solve did not converge: " << r.status << "\n";
     return 1;
@@ -468,8 +494,13 @@ int CheckScene(const std::string& file) {
                       ? ", windows of " + std::to_string(s.method.slab_points)
                       : std::string(""))
               << ")";
-  std::cout << ", " << s.points << " points on [" << s.t_start << ", "
-            << s.t_end << "]\n";
+  if (s.method.tolerance.enabled())
+    std::cout << ", error control to " << s.method.tolerance.absolute << " + "
+              << s.method.tolerance.relative << "·|value| on [" << s.t_start
+              << ", " << s.t_end << "]\n";
+  else
+    std::cout << ", " << s.points << " points on [" << s.t_start << ", "
+              << s.t_end << "]\n";
   return 0;
 }
 

@@ -37,20 +37,39 @@ std::string Figure::Data(const std::string& name,
 
 fs::path Figure::Render() {
   const fs::path png = dir_ / (stem_ + ".png");
+  const fs::path log = dir_ / (stem_ + ".gnuplot.log");
   fs::remove(png);
   {
     // tee keeps the script next to the PNG; gnuplot runs in the figure
-    // directory so the script refers to its data by relative names.
+    // directory so the script refers to its data by relative names. Its
+    // messages go to a log, and the pipeline always exits 0: a failure is
+    // judged by the PNG and reported once, with gnuplot's first words, by
+    // the exception below (not as "pclose returned error" and a page of
+    // gnuplot output on the terminal).
     const std::string dir = dir_.string();
-    Gnuplot gp("cd '" + dir + "' && tee '" + stem_ + ".gp' | gnuplot");
+    Gnuplot gp("(cd '" + dir + "' && tee '" + stem_ + ".gp' | gnuplot 2> '" +
+               log.filename().string() + "'); exit 0");
     gp << "set terminal pngcairo size " << width_ << "," << height_
        << " enhanced font 'sans,11'\n"
        << "set output '" << stem_ << ".png'\n"
        << script_.str() << "unset output\n";
   }
-  if (!fs::exists(png) || fs::file_size(png) == 0)
-    throw std::runtime_error("gnuplot did not produce " + png.string() +
-                             "; see its messages above and " + stem_ + ".gp");
+  std::error_code ec;
+  if (!fs::exists(png) || fs::file_size(png) == 0) {
+    std::ifstream in(log);
+    std::string line, first;
+    while (std::getline(in, line) && first.size() < 200)
+      if (line.find_first_not_of(" \t^") != std::string::npos)
+        first += (first.empty() ? "" : " / ") + line;
+    fs::remove(png, ec);
+    throw std::runtime_error(
+        "gnuplot did not draw " + png.filename().string() +
+        (first.empty() ? std::string(" (is gnuplot installed?)")
+                       : " (gnuplot: " + first + ")") +
+        "; the script is " + stem_ + ".gp, gnuplot's messages " +
+        log.filename().string());
+  }
+  fs::remove(log, ec);
   return png;
 }
 

@@ -191,6 +191,49 @@ std::map<std::string, std::function<Path(const scene::Scene&)>> ApiSolves() {
   };
 }
 
+// Under error control the nodes follow the controller's decisions: the
+// scene (kinetic + central effects) and the registry's hand-written Kepler
+// Lagrangian take the same ones (97518 nodes for e = 0.9 to 1e-6), and both
+// meet the tolerance: end states within 10·tolerance of the exact one and
+// within 1e-12 of each other. (With x(0) = 1 − e = 0.09999999999999998
+// instead of 0.1 the registry took 96850 nodes: a controller amplifies a
+// difference in the data into a different grid.) The scene writes every
+// stride-th node and the last.
+bool UnderErrorControl_SceneAndApiMeetTheTolerance(const scene::Scene& s) {
+  MemorySink sink;
+  const scene::RunOutcome r = scene::RunScene(s, sink);
+  BOOST_TEST_REQUIRE(r.converged, r.status);
+  const NamedProblem& problem = FindProblem("kepler_e09");
+  BOOST_TEST_REQUIRE(problem.initial.x == s.x0);
+  BOOST_TEST_REQUIRE(problem.initial.v == s.v0);
+  MarchOptions o = Windows(s.method.slab_points);
+  o.tolerance = s.method.tolerance;
+  const Grid grid{.op = s.method.op, .t_start = s.t_start, .t_end = s.t_end};
+  const MarchResult api = problem.march(grid, o, {});
+  BOOST_TEST_REQUIRE(api.status.converged, api.status.reason);
+  const ExactState exact = problem.exact(s.t_end);
+  const double tol = s.method.tolerance.relative;
+  double scene_error = 0, api_error = 0;
+  for (std::size_t c = 0; c < exact.x.size(); ++c) {
+    scene_error = std::max(scene_error, std::abs(r.end_x[c] - exact.x[c]));
+    api_error = std::max(api_error, std::abs(api.end_position[c] - exact.x[c]));
+  }
+  BOOST_TEST_MESSAGE("kepler_e09: end error "
+                     << scene_error << " (scene), " << api_error << " (API); "
+                     << r.points << " and " << api.points << " nodes");
+  BOOST_TEST(scene_error <= 10 * tol);
+  BOOST_TEST(api_error <= 10 * tol);
+  BOOST_TEST(r.points == api.points);
+  for (std::size_t c = 0; c < exact.x.size(); ++c)
+    BOOST_TEST(std::abs(r.end_x[c] - api.end_position[c]) <= 1e-12);
+  const long long stride = s.output.stride;
+  BOOST_TEST(sink.path.t.size() ==
+             std::size_t((r.points - 1) / stride + 1 +
+                         ((r.points - 1) % stride != 0 ? 1 : 0)));
+  BOOST_TEST(sink.path.t.back() == s.t_end);
+  return scene_error <= 10 * tol && api_error <= 10 * tol;
+}
+
 double MaxDifference(const Path& a, const Path& b) {
   BOOST_TEST_REQUIRE(a.t.size() == b.t.size());
   double worst = 0;
@@ -228,6 +271,11 @@ BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
         ++skipped;
         continue;
       }
+      if (stem == "kepler_e09") {
+        ++checked;
+        BOOST_TEST(UnderErrorControl_SceneAndApiMeetTheTolerance(s));
+        continue;
+      }
       const auto api = solves.find(stem);
       BOOST_TEST_REQUIRE((api != solves.end()),
                          "no API counterpart for the shipped scene " << stem);
@@ -240,7 +288,7 @@ BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
       ++checked;
     }
   }
-  BOOST_TEST(checked + skipped == int(solves.size()));
+  BOOST_TEST(checked + skipped == int(solves.size()) + 1);
   BOOST_TEST(skipped <= 1);  // only the FPU chain (dof 8) may be missing
 }
 

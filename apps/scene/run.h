@@ -39,6 +39,8 @@ struct RunOutcome {
   std::string status;  // "converged", or why not
   std::string method;  // human description, e.g. "variational, sbp42, ..."
   std::vector<double> end_x, end_v;  // best end state the method offers
+  long long points = 0;              // nodes computed (under error control:
+                                     // chosen by the march)
   double seconds = 0;                // the solve, without output
   nlohmann::json solver;  // method-specific figures (iterations, ‖∇S‖, …)
 };

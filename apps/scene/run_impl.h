@@ -3,7 +3,9 @@
 #pragma once
 
 #include <chrono>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -111,9 +113,12 @@ class NodeEmitter {
     return reference_ ? reference_->description() : "";
   }
 
-  // Node `index` of the grid (0 … points − 1).
+  // Node `index` of the grid (0 … points − 1; under error control the
+  // number of nodes is not known in advance, and the last is at t_end).
   void Node(long long index, double t, const double* x, const double* v) {
-    if (index % scene_.output.stride != 0 && index != scene_.points - 1) return;
+    const bool last =
+        scene_.points > 0 ? index == scene_.points - 1 : t == scene_.t_end;
+    if (index % scene_.output.stride != 0 && !last) return;
     int k = 0;
     double p[d] = {};
     if (scene_.Wants("energy") || scene_.Wants("momentum") ||
@@ -217,6 +222,7 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
     out.end_x = sol.corrected.position;
     out.end_v =
         s.order == 2 ? sol.corrected.velocity : std::vector<double>(d, 0.0);
+    out.points = sol.points();
     for (int i = 0; i < sol.points(); ++i) {
       double x[d], v[d];
       for (int c = 0; c < d; ++c) {
@@ -233,6 +239,14 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
   options.window_points = s.method.slab_points;
   options.keep_trajectory = false;
   options.solve.path = SolverPath(s.method.solver);
+  options.tolerance = s.method.tolerance;
+  if (options.tolerance.enabled()) {
+    std::ostringstream tol;
+    tol << std::setprecision(3) << ", error control to "
+        << options.tolerance.absolute << " + " << options.tolerance.relative
+        << "·|value|";
+    out.method += tol.str();
+  }
   long long index = 0;
   double output_seconds = 0;
   const double span = s.t_end - s.t_start;
@@ -251,12 +265,26 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
     out.status += " (" + r.status.reason + ")";
   j["windows"] = r.window_count;
   j["fallbacks"] = r.fallbacks;
+  j["check_failures"] = r.check_failures;
   j["refinement"] = r.refinement;
   j["factorizations"] = r.iterations;
   j["corrections"] = r.corrections;
   j["error_estimate"] = r.error_estimate;
+  j["predictor_steps"] = r.predictor_steps;
+  if (options.tolerance.enabled()) {
+    j["tolerance"] = {{"absolute", options.tolerance.absolute},
+                      {"relative", options.tolerance.relative}};
+    j["rejected"] = r.rejected;
+    j["min_step"] = r.min_step;
+    j["max_step"] = r.max_step;
+  }
+  if (!r.status.converged) {
+    j["failed_at"] = r.failed_at;
+    j["last_residual"] = r.last_residual;
+  }
   out.end_x = r.end_position;
   out.end_v = r.end_velocity;
+  out.points = r.points;
   return out;
 }
 
@@ -303,6 +331,7 @@ RunOutcome RunStepper(const problems::Composed<D>& lagrangian, const Scene& s,
   out.solver["iterations_per_step"] = r.iterations_per_step();
   out.solver["max_iterations_per_step"] = r.max_iterations;
   out.solver["evaluations"] = r.evaluations;
+  out.points = r.steps + 1;
   out.end_x.assign(y.data(), y.data() + D);
   const Eigen::Matrix<double, D, 1> v_end =
       hamiltonian.inverse_mass() * y.template tail<D>();

@@ -524,11 +524,12 @@ class Reader {
 
   void ReadMethod(const toml::table& root, Scene& s) const {
     const toml::table& t = Table(root, "method", false);
-    CheckKeys(t, "[method]", {"kind", "operator", "solver", "slab_points"});
+    CheckKeys(t, "[method]",
+              {"kind", "operator", "solver", "slab_points", "tolerance"});
     if (const toml::node* n = t.get("kind"))
       s.method.kind = Choice(*n, "kind", MethodKinds());
     if (!s.variational()) {
-      for (const char* key : {"operator", "solver", "slab_points"})
+      for (const char* key : {"operator", "solver", "slab_points", "tolerance"})
         if (const toml::node* n = t.get(key))
           Fail(*n, Quote(key) + " applies to kind = \"variational\" only",
                "expected no " + Quote(key) + " for the stepper " +
@@ -563,6 +564,47 @@ class Reader {
         Fail(*n, "solver = \"ceres-lm\" solves globally and cannot march",
              "expected slab_points = 0, or solver = \"newton\"");
     }
+    if (const toml::node* n = t.get("tolerance")) ReadTolerance(t, *n, s);
+  }
+
+  // tolerance = 1e-6 (absolute and relative) or {absolute = …, relative = …}.
+  void ReadTolerance(const toml::table& method, const toml::node& n,
+                     Scene& s) const {
+    const std::string expected =
+        "expected tolerance = 1e-6 (absolute and relative) or tolerance = "
+        "{absolute = 1e-8, relative = 1e-6}, numbers in [0, 1) with at least "
+        "one positive";
+    auto value = [&](const toml::node& v, const std::string& key) {
+      const double x = Number(v, key, "a number in [0, 1)");
+      if (!(x >= 0 && x < 1))
+        Fail(v, Quote(key) + " = " + FormatNumber(x) + " is outside [0, 1)",
+             expected);
+      return x;
+    };
+    Tolerance tol;
+    if (const toml::table* tt = n.as_table()) {
+      CheckKeys(*tt, "tolerance", {"absolute", "relative"});
+      if (const toml::node* a = tt->get("absolute"))
+        tol.absolute = value(*a, "absolute");
+      if (const toml::node* r = tt->get("relative"))
+        tol.relative = value(*r, "relative");
+    } else {
+      tol.absolute = tol.relative = value(n, "tolerance");
+    }
+    if (!tol.enabled()) Fail(n, "a tolerance of zero cannot be met", expected);
+    if (s.method.solver == "ceres-lm")
+      Fail(n, "solver = \"ceres-lm\" solves globally and cannot march",
+           "expected no tolerance, or solver = \"newton\"");
+    if (const toml::node* w = method.get("slab_points");
+        w && s.method.slab_points == 0)
+      Fail(*w,
+           "slab_points = 0 asks for one global solve, but a tolerance "
+           "marches in windows",
+           "expected slab_points >= " +
+               std::to_string(sbp::Table(s.method.op).min_points) +
+               " or no slab_points (48)");
+    if (s.method.slab_points == 0) s.method.slab_points = 48;
+    s.method.tolerance = tol;
   }
 
   void ReadInitial(const toml::table& root, Scene& s) const {
@@ -610,8 +652,19 @@ class Reader {
     const std::string at_least =
         "at least " + std::to_string(minimum) +
         (s.variational() ? " for " + s.method.op : std::string(""));
+    if (s.method.tolerance.enabled()) {
+      // The march chooses the nodes.
+      if (const toml::node* p = t.get("points"))
+        Fail(*p,
+             "points and [method] tolerance exclude each other: the tolerance "
+             "chooses the grid",
+             "expected no points (error control), or no tolerance (a uniform "
+             "grid of that many points)");
+      return;
+    }
     const toml::node& points =
-        Require(t, "time", "points", "points = N, the number of grid nodes");
+        Require(t, "time", "points",
+                "points = N, the number of grid nodes (or [method] tolerance)");
     s.points = Whole(points, "points", 0, "a whole number, " + at_least);
     if (s.points < minimum)
       Fail(points,
@@ -772,19 +825,24 @@ nlohmann::json SceneJson(const Scene& s) {
     method["operator"] = s.method.op;
     method["solver"] = s.method.solver;
     method["slab_points"] = s.method.slab_points;
+    if (s.method.tolerance.enabled())
+      method["tolerance"] = {{"absolute", s.method.tolerance.absolute},
+                             {"relative", s.method.tolerance.relative}};
   }
-  return {
-      {"source", s.source},
-      {"title", s.title},
-      {"system", {{"dof", s.dof}, {"order", s.order}}},
-      {"effect", effects},
-      {"initial", initial},
-      {"time", {{"start", s.t_start}, {"end", s.t_end}, {"points", s.points}}},
-      {"method", method},
-      {"output",
-       {{"diagnostics", s.output.diagnostics},
-        {"reference", s.output.reference},
-        {"stride", s.output.stride}}}};
+  return {{"source", s.source},
+          {"title", s.title},
+          {"system", {{"dof", s.dof}, {"order", s.order}}},
+          {"effect", effects},
+          {"initial", initial},
+          {"time",
+           {{"start", s.t_start},
+            {"end", s.t_end},
+            {"points", s.points > 0 ? nlohmann::json(s.points) : nullptr}}},
+          {"method", method},
+          {"output",
+           {{"diagnostics", s.output.diagnostics},
+            {"reference", s.output.reference},
+            {"stride", s.output.stride}}}};
 }
 
 std::string SchemaHelp() {
@@ -799,7 +857,8 @@ std::string SchemaHelp() {
        "only)\n"
        "  [time]       start = 0.0        optional\n"
        "               end = T            final time, > start\n"
-       "               points = Nt        grid nodes, both ends included\n"
+       "               points = Nt        grid nodes, both ends included (not "
+       "with a tolerance)\n"
        "  [method]     kind = \"variational\" | "
     << Join(steppers::MethodNames())
     << "\n"
@@ -809,6 +868,12 @@ std::string SchemaHelp() {
        "(variational)\n"
        "               slab_points = 0    march in windows of this many "
        "points (0: global)\n"
+       "               tolerance = 1e-6   error control (variational): every "
+       "node within\n"
+       "                                  absolute + relative·|value| of the "
+       "local flow;\n"
+       "                                  or {absolute = ..., relative = ...}; "
+       "no [time] points\n"
        "  [output]     diagnostics = []   energy, momentum, angular_momentum, "
        "error\n"
        "               reference = \"none\" none | exact (closed form) | ode "

@@ -22,6 +22,8 @@
 //   operator = "sbp42"                     # variational only
 //   solver = "newton"                      # newton | full-newton | ceres-lm
 //   slab_points = 0                        # march in windows (0: global)
+//   tolerance = 1e-6                       # or {absolute = …, relative = …}:
+//                                          # error control, no [time] points
 //   [output]
 //   diagnostics = ["energy"]               # energy, momentum,
 //                                          # angular_momentum, error
@@ -37,6 +39,7 @@
 #include <vector>
 
 #include "apps/scene/catalogue.h"
+#include "solvers/variational/step_control.h"
 
 namespace vivp::scene {
 
@@ -58,12 +61,16 @@ struct Scene {
   std::vector<double> x0, v0;  // v0 empty for a first-order system
   int order = 2;               // 2: some effect has kinetic energy
   double t_start = 0, t_end = 1;
-  long long points = 0;
+  long long points = 0;  // 0 under error control: the march chooses
   struct Method {
     std::string kind = "variational";
     std::string op = "sbp42";
     std::string solver = "newton";
     long long slab_points = 0;
+    // Error control (variational): the windows' steps are chosen so that
+    // every returned node is within absolute + relative·|value| of the local
+    // flow; [time] points is then not given.
+    Tolerance tolerance;
   } method;
   struct Output {
     std::vector<std::string> diagnostics;

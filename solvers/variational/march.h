@@ -120,24 +120,19 @@ class Marcher {
       }
       const bool underflow = !(dtw > 1e-13 * std::max(std::abs(t), span));
       if (underflow || rejected_in_row > 40) {
-        FailAt(t, t + dtw * double(n - 1),
-               "the tolerance cannot be met: " +
-                   (underflow ? "the step fell to " + Text(dtw) +
-                                    ", below the round-off limit 1e-13 of the "
-                                    "time span"
-                              : std::to_string(rejected_in_row) +
-                                    " windows in a row rejected (step " +
-                                    Text(dtw) + ")") +
-                   (last_why_.empty() ? "" : "; last: " + last_why_),
-               last_residual_);
+        Unreachable(t, (underflow ? "the step fell to " + Text(dtw) +
+                                        ", below the round-off limit 1e-13 of "
+                                        "the time span"
+                                  : std::to_string(rejected_in_row) +
+                                        " windows in a row rejected (step " +
+                                        Text(dtw) + ")") +
+                           (last_why_.empty() ? "" : "; last: " + last_why_));
         return false;
       }
       if (out_.points + n > options_.max_points) {
-        FailAt(t, t + dtw * double(n - 1),
-               "the tolerance needs more than max_points = " +
-                   std::to_string(options_.max_points) + " nodes (step " +
-                   Text(dtw) + ")",
-               last_residual_);
+        Unreachable(t, "it needs more than max_points = " +
+                           std::to_string(options_.max_points) +
+                           " nodes (step " + Text(dtw) + ")");
         return false;
       }
       Attempt a = Solve(state, n, dtw, false);
@@ -292,12 +287,12 @@ class Marcher {
         ++out_.fallbacks;
         return Window(state, first, points, depth, last_of_march);
       }
-      FailAt(t0, t1, a.why, a.residual);
+      FailAt(t0, t1, a.why, a.residual, Solved(a));
       return false;
     }
     const long long half = (points + 1) / 2;
     if (depth >= options_.max_split_depth || half < min_points_) {
-      FailAt(t0, t1, a.why, a.residual);
+      FailAt(t0, t1, a.why, a.residual, Solved(a));
       return false;
     }
     ++out_.fallbacks;
@@ -385,14 +380,33 @@ class Marcher {
     }
   }
 
-  // A failed window: the march reports where, why, and the residual left.
-  void FailAt(double t0, double t1, const std::string& why, double residual) {
+  // A failed window: the march reports where, why, and the residual left
+  // (for a window that was solved but rejected by a check, the residual of
+  // the solution it rejected).
+  void FailAt(double t0, double t1, const std::string& why, double residual,
+              bool solved = false) {
     out_.last_residual = residual;
     out_.failed_at = t0;
     std::ostringstream s;
-    s << "window [" << t0 << ", " << t1 << "] did not converge: " << why
+    s << "window [" << t0 << ", " << t1 << "] "
+      << (solved ? "was solved but rejected: " : "did not converge: ") << why
       << "; last residual ‖F‖∞ = " << residual;
     out_.status = {false, s.str()};
+  }
+
+  // Error control that cannot go on at time t.
+  void Unreachable(double t, const std::string& why) {
+    out_.last_residual = last_residual_;
+    out_.failed_at = t;
+    std::ostringstream s;
+    s << "the tolerance cannot be met at t = " << t << ": " << why
+      << "; last residual ‖F‖∞ = " << last_residual_;
+    out_.status = {false, s.str()};
+  }
+
+  static bool Solved(const Attempt& a) {
+    return a.failure == WindowFailure::kCheck ||
+           a.failure == WindowFailure::kCoarse;
   }
 
   static std::string Text(double v) {
@@ -456,13 +470,13 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
                        min_points);
   const bool ok = adaptive ? m.Adaptive(state) : m.Uniform(state);
   if (ok) {
-    std::string note = adaptive ? "error control" : "";
+    std::string how;
+    if (adaptive) how = " under error control";
     if (out.refinement > 1)
-      note = "on a grid refined x" + std::to_string(out.refinement) +
-             " (the requested step exceeds the stability limit of " + grid.op +
-             ")";
-    out.status = {true, "all windows converged" +
-                            (note.empty() ? "" : " (" + note + ")")};
+      how = " on a grid refined x" + std::to_string(out.refinement) +
+            " (the requested step exceeds the stability limit of " + grid.op +
+            ")";
+    out.status = {true, "all windows converged" + how};
   }
   out.end_position = state.x;
   out.end_velocity = state.v;

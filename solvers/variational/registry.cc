@@ -63,7 +63,7 @@ const std::vector<NamedProblem>& Registry() {
         "kepler_e09",
         "planar Kepler e = 0.9 from pericentre, x(0) = (0.1, 0), ẋ(0) = (0, "
         "√19) (d = 2, period 2π)",
-        eccentric, initial(eccentric), canonical));
+        eccentric, {{0.1, 0.0}, {0.0, std::sqrt(19.0)}}, canonical));
     return r;
   }();
   return problems;

@@ -161,6 +161,16 @@ class WindowEngine {
 
   long long factorizations() const { return cache_.factorizations; }
 
+  // ‖F‖∞ of the window's equations at the last solve's result: the residual
+  // a rejected window reports (marching does not evaluate it otherwise).
+  double LastResidual() const {
+    std::vector<double> f(system_.size());
+    system_.Residual(y_.data(), f.data());
+    double m = 0;
+    for (double v : f) m = std::isfinite(v) ? std::max(m, std::abs(v)) : NAN;
+    return m;
+  }
+
  private:
   static sbp::RegularizedOperator<double> MakeDbar(const std::string& op,
                                                    int points, double dt,

@@ -124,14 +124,19 @@ class WindowSolver {
     const double* pend_x = &px_[(points - 1) * d];
     const double* pend_v = &pv_[(points - 1) * d];
     if (!SolveNewton(a, initial, x0, v0, fresh, nodes)) return a;
-    if (std::string why = Finite(a); !why.empty())
-      return Failed(a, WindowFailure::kNewton, why);
-    if (std::string why = Consistent(a, pr, pend_x, pend_v); !why.empty())
-      return Failed(a, WindowFailure::kCheck, why);
-    if (uniform)
-      if (std::string why = Resolved(a, pr, pend_x); !why.empty())
-        return Failed(a, WindowFailure::kCoarse, why);
-    return a;
+    std::string why = Finite(a);
+    WindowFailure failure = WindowFailure::kNewton;
+    if (why.empty()) {
+      why = Consistent(a, pr, pend_x, pend_v);
+      failure = WindowFailure::kCheck;
+    }
+    if (why.empty() && uniform) {
+      why = Resolved(a, pr, pend_x);
+      failure = WindowFailure::kCoarse;
+    }
+    if (why.empty()) return a;
+    if (last_engine_) a.residual = last_engine_->LastResidual();
+    return Failed(a, failure, why);
   }
 
   long long factorizations() const {
@@ -151,8 +156,10 @@ class WindowSolver {
   bool SolveNewton(Attempt& a, const InitialData& initial, const State& x0,
                    const State& v0, bool fresh, bool nodes) {
     const int n = a.points;
+    last_engine_ = nullptr;
     if (EngineApplies()) {
       WindowEngine<P>& e = Engine(n, a.dt);
+      last_engine_ = &e;
       solvers::NewtonOptions newton = options_.solve.newton;
       newton.phase_timings = false;
       newton.final_residual = false;
@@ -207,6 +214,7 @@ class WindowSolver {
                  .t_end = a.dt * double(n - 1),
                  .sigma0 = sigma0_};
     const IvpSolution<double> s = SolveIvp(problem_, initial, g, so);
+    a.residual = s.residual_norm;
     a.iterations = s.iterations;
     a.corrections = s.iterations;
     if (!s.status.converged) {
@@ -360,6 +368,7 @@ class WindowSolver {
   int order_;
   Predictor<P> predictor_;
   std::vector<std::unique_ptr<WindowEngine<P>>> engines_;
+  const WindowEngine<P>* last_engine_ = nullptr;  // of the last solve
   std::vector<double> tau_, px_, pv_;
 };
 
