@@ -125,13 +125,21 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
         << std::setw(10) << "seconds\n";
   bool all_converged = true;
   for (const auto& r : study.rows) {
+    // A run that stopped has no end error to speak of.
+    auto error = [&](double e) {
+      std::ostringstream s;
+      if (r.converged)
+        s << std::scientific << std::setprecision(2) << e;
+      else
+        s << "-";
+      return s.str();
+    };
     human << std::scientific << std::setprecision(1) << std::setw(9)
           << r.tolerance << std::defaultfloat << std::setw(10) << r.points
           << std::setw(9) << r.windows << std::setw(9) << r.rejected
-          << std::scientific << std::setprecision(2) << std::setw(11)
-          << r.err_x_corrected << std::setw(11) << r.err_p_corrected
-          << std::setw(11) << r.max_error << std::defaultfloat << std::setw(10)
-          << std::setprecision(3) << r.seconds
+          << std::setw(11) << error(r.err_x_corrected) << std::setw(11)
+          << error(r.err_p_corrected) << std::setw(11) << error(r.max_error)
+          << std::setw(10) << std::setprecision(3) << r.seconds
           << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
     all_converged = all_converged && r.converged;
   }

@@ -33,9 +33,12 @@ struct BenchProblem {
 const std::vector<BenchProblem>& BenchProblems();
 
 // Registers the variational solver (time-slab marching with the default
-// window) as external methods variational_sbp21 … variational_sbp84 for the
-// bench problems that are in its registry with the same setup (anharmonic,
-// pendulum, kepler). Called by BenchProblems(); idempotent.
+// window) as external methods for the bench problems that are in its
+// registry with the same setup (anharmonic, pendulum, kepler, kepler_e09):
+// variational_sbp21 … variational_sbp84 under error control (the knob a
+// tolerance, absolute = relative, like odeint_dopri5's) and
+// variational_sbp21_uniform … on a uniform grid (the knob a step count).
+// Called by BenchProblems(); idempotent.
 void RegisterVariationalMethods();
 
 // The damped oscillator of seed 000 (not Hamiltonian): the variational

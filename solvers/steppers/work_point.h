@@ -3,6 +3,7 @@
 // users of bench_problems.h need (work_precision.h measures).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -28,13 +29,15 @@ struct WorkPoint {
 
 // A method from outside the stepper family (the variational solver).
 struct ExternalRun {
-  std::vector<std::vector<double>> states;  // (q, p) at t_k = k·t_end/steps
+  std::vector<std::vector<double>> states;  // (q, p) at the method's nodes
+  long steps = 0;                           // intervals between the nodes
   long evaluations = 0, iterations = 0;
   std::string status = "ok";
 };
+// `knob`: the step count, or the tolerance for an adaptive method.
 using ExternalMethod = std::function<ExternalRun(const std::string& problem,
                                                  const std::vector<double>& y0,
-                                                 double t_end, long steps)>;
+                                                 double t_end, double knob)>;
 
 inline std::map<std::string, ExternalMethod>& ExternalMethods() {
   static std::map<std::string, ExternalMethod> methods;
@@ -46,10 +49,17 @@ inline std::map<std::string, ExternalApplicability>& ExternalApplies() {
   static std::map<std::string, ExternalApplicability> applies;
   return applies;
 }
+// The external methods whose knob is a tolerance.
+inline std::vector<std::string>& AdaptiveExternalMethods() {
+  static std::vector<std::string> names;
+  return names;
+}
 inline void RegisterExternalMethod(const std::string& name, ExternalMethod m,
-                                   ExternalApplicability applies = {}) {
+                                   ExternalApplicability applies = {},
+                                   bool adaptive = false) {
   ExternalMethods()[name] = std::move(m);
   ExternalApplies()[name] = std::move(applies);
+  if (adaptive) AdaptiveExternalMethods().push_back(name);
 }
 // True for every non-external method.
 inline bool ExternalMethodApplies(const std::string& method,
@@ -65,8 +75,11 @@ inline const std::vector<std::string>& PeerNames() {
   return names;
 }
 
+// True when the method's knob is a tolerance, not a step count.
 inline bool IsAdaptive(const std::string& method) {
-  return method == "odeint_dopri5";
+  const auto& a = AdaptiveExternalMethods();
+  return method == "odeint_dopri5" ||
+         std::find(a.begin(), a.end(), method) != a.end();
 }
 
 }  // namespace vivp::steppers

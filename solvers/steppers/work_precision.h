@@ -92,7 +92,27 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
   };
   Vector y = start;
   std::function<void(bool)> run;  // one run; observe or not
-  if (IsAdaptive(method)) {
+  if (ExternalMethods().count(method)) {
+    const bool adaptive = IsAdaptive(method);
+    if (adaptive) {
+      w.tolerance = knob;
+    } else {
+      w.steps = static_cast<long>(knob);
+      w.h = t_end / w.steps;
+    }
+    run = [&](bool with_observer) {
+      const ExternalRun r =
+          ExternalMethods().at(method)(problem_name, y0, t_end, knob);
+      w.evaluations = r.evaluations;
+      w.iterations = r.iterations;
+      w.status = r.status;
+      if (adaptive) w.steps = r.steps;
+      if (r.states.empty()) return;
+      y = Vector::Map(r.states.back().data());
+      if (with_observer)
+        for (const auto& s : r.states) observe(Vector::Map(s.data()));
+    };
+  } else if (IsAdaptive(method)) {
     w.tolerance = knob;
     run = [&](bool with_observer) {
       y = start;
@@ -102,20 +122,6 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
       w.evaluations = r.evaluations;
       w.status = ToString(r.status);
       if (with_observer) observe(y);  // endpoint only: no dense output
-    };
-  } else if (ExternalMethods().count(method)) {
-    w.steps = static_cast<long>(knob);
-    w.h = t_end / w.steps;
-    run = [&](bool with_observer) {
-      const ExternalRun r =
-          ExternalMethods().at(method)(problem_name, y0, t_end, w.steps);
-      w.evaluations = r.evaluations;
-      w.iterations = r.iterations;
-      w.status = r.status;
-      if (r.states.empty()) return;
-      y = Vector::Map(r.states.back().data());
-      if (with_observer)
-        for (const auto& s : r.states) observe(Vector::Map(s.data()));
     };
   } else {
     w.steps = static_cast<long>(knob);
