@@ -122,7 +122,7 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
   human << std::setw(9) << "tol" << std::setw(10) << "points" << std::setw(9)
         << "windows" << std::setw(9) << "rejected" << std::setw(11) << "err x"
         << std::setw(11) << "err v" << std::setw(11) << "max err x"
-        << std::setw(10) << "seconds\n";
+        << std::setw(11) << "max err v" << std::setw(10) << "seconds\n";
   bool all_converged = true;
   for (const auto& r : study.rows) {
     // A run that stopped has no end error to speak of.
@@ -139,7 +139,8 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
           << std::setw(9) << r.windows << std::setw(9) << r.rejected
           << std::setw(11) << error(r.err_x_corrected) << std::setw(11)
           << error(r.err_p_corrected) << std::setw(11) << error(r.max_error)
-          << std::setw(10) << std::setprecision(3) << r.seconds
+          << std::setw(11) << error(r.max_error_v) << std::setw(10)
+          << std::setprecision(3) << r.seconds
           << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
     all_converged = all_converged && r.converged;
   }
@@ -151,10 +152,12 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
       << t.min_ratio << " to " << t.max_ratio;
     return s.str();
   };
-  human << "achieved end error against the tolerance:      "
+  human << "end error (position) against the tolerance:      "
         << tracking(study.tracking)
-        << "\nlargest node error against the tolerance:      "
-        << tracking(study.tracking_max) << "\n";
+        << "\nlargest node error, position:                    "
+        << tracking(study.tracking_max)
+        << "\nlargest node error, velocity:                    "
+        << tracking(study.tracking_max_v) << "\n";
   if (!o.json.empty()) {
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& r : study.rows)
@@ -166,6 +169,7 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
                       {"err_x_corrected", JsonNumber(r.err_x_corrected)},
                       {"err_p_corrected", JsonNumber(r.err_p_corrected)},
                       {"max_error", JsonNumber(r.max_error)},
+                      {"max_error_v", JsonNumber(r.max_error_v)},
                       {"iterations", r.iterations},
                       {"seconds", r.seconds},
                       {"converged", r.converged},
@@ -177,7 +181,8 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
                   {"slab_points", window},
                   {"rows", rows},
                   {"tracking", TrackingJson(study.tracking)},
-                  {"tracking_max", TrackingJson(study.tracking_max)}});
+                  {"tracking_max", TrackingJson(study.tracking_max)},
+                  {"tracking_max_v", TrackingJson(study.tracking_max_v)}});
   }
   if (!all_converged) {
     std::cerr << "vivp: some runs did not converge (see the table)\n";

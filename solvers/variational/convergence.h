@@ -33,6 +33,7 @@ struct ConvergenceRow {
   // how many were rejected. NaN / 0 otherwise.
   double tolerance = std::numeric_limits<double>::quiet_NaN();
   double max_error = std::numeric_limits<double>::quiet_NaN();
+  double max_error_v = std::numeric_limits<double>::quiet_NaN();  // velocity
   long long windows = 0;
   int rejected = 0;
   double seconds = 0;
@@ -59,6 +60,7 @@ struct ConvergenceStudy {
   ConvergenceOrders orders_true_dt;  // against 1/(Nt − 1)
   ToleranceTracking tracking;        // RunToleranceStudy: end error
   ToleranceTracking tracking_max;    // RunToleranceStudy: max node error
+  ToleranceTracking tracking_max_v;  // … of the node velocities
 };
 
 // Fits the orders of the converged rows (a solve that did not converge has
@@ -109,6 +111,8 @@ inline void FitTracking(ConvergenceStudy& study, double floor) {
       track([](const ConvergenceRow& r) { return r.err_x_corrected; });
   study.tracking_max =
       track([](const ConvergenceRow& r) { return r.max_error; });
+  study.tracking_max_v =
+      track([](const ConvergenceRow& r) { return r.max_error_v; });
 }
 
 }  // namespace vivp

@@ -97,8 +97,10 @@ class Marcher {
     double t = grid_.t_start;
     double dt = InitialStep(state);
     int rejected_in_row = 0;
-    // The last rejection's step and error norm (round-off detection).
-    double rejected_dt = 0, rejected_err = 0;
+    // Since the last accepted window: the largest step rejected on
+    // truncation, and whether a step below it was tried after round-off.
+    double truncation_rejected_at = 0;
+    bool tried_between = false;
     while (t < grid_.t_end) {
       if (order_ == 2) {
         // Keep Δt·ω at half the stability limit (resolution.h) at the
@@ -147,29 +149,32 @@ class Marcher {
                         ? "error estimate " + Text(err) + " times the tolerance"
                         : a.why;
         last_residual_ = a.residual;
-        // Truncation errors fall with the step; round-off in (Dx)_N grows
-        // like ε|x|/Δt. An estimate that grew although the step was cut is
-        // round-off: no smaller step meets the tolerance (measured: SBP84 on
-        // Kepler e = 0.9 below 1e-9).
-        if (a.ok() && rejected_in_row > 1 && dtw < rejected_dt &&
-            err >= rejected_err) {
-          Unreachable(t,
-                      "it is below the round-off level of the window's "
-                      "error estimates here (cutting the step from " +
-                          Text(rejected_dt) + " to " + Text(dtw) +
-                          " raised the estimate from " + Text(rejected_err) +
-                          " to " + Text(err) +
-                          " times the tolerance); use a larger tolerance");
-          return false;
+        // Truncation errors fall with the step; the round-off of (Dx)_N
+        // grows like ε|x|/Δt. A window rejected on a velocity estimate at
+        // its round-off level needs a larger step, not a smaller one. When a
+        // larger step was rejected on truncation since the last accepted
+        // window, one step between the two is tried; if that fails too, no
+        // step meets the tolerance in double precision here (measured:
+        // SBP84 on Kepler e = 0.9 below 1e-9).
+        const std::string roundoff = a.ok() ? RoundOffBound(state, a) : "";
+        if (!roundoff.empty()) {
+          if (truncation_rejected_at > dtw && tried_between) {
+            Unreachable(t, roundoff);
+            return false;
+          }
+          tried_between = truncation_rejected_at > dtw;
+          dt =
+              tried_between ? std::sqrt(dtw * truncation_rejected_at) : 4 * dtw;
+          continue;
         }
-        if (a.ok()) {
-          rejected_dt = dtw;
-          rejected_err = err;
-        }
+        if (a.ok())
+          truncation_rejected_at = std::max(truncation_rejected_at, dtw);
         dt = a.ok() ? control.Reject(dtw, err) : 0.25 * dtw;
         continue;
       }
       rejected_in_row = 0;
+      truncation_rejected_at = 0;
+      tried_between = false;
       Accept(a, state, -1, t, last ? a.points : a.points - 1, 0, err);
       t = last ? grid_.t_end : t + a.dt * double(a.points - 1);
       dt = control.Accept(dtw, err);
@@ -238,6 +243,39 @@ class Marcher {
                                              std::abs(a.end.velocity[c]))));
     }
     return err;
+  }
+
+  // Why a rejected window's error is round-off: its largest term is a
+  // velocity estimate within twice the round-off level of (Dx)_N; "" if not.
+  std::string RoundOffBound(const InitialData& state, const Attempt& a) const {
+    if (order_ != 2) return "";
+    const Tolerance& tol = options_.tolerance;
+    double worst = 0, est = 0, level = 0, allowance = 0;
+    bool velocity = false;
+    for (int c = 0; c < d; ++c) {
+      const double ax = tol.Allowance(
+          std::max(std::abs(state.x[c]), std::abs(a.end.position[c])));
+      const double av = tol.Allowance(
+          std::max(std::abs(state.v[c]), std::abs(a.end.velocity[c])));
+      if (a.est_x[c] / ax > worst) {
+        worst = a.est_x[c] / ax;
+        velocity = false;
+      }
+      if (a.est_v[c] / av > worst) {
+        worst = a.est_v[c] / av;
+        velocity = true;
+        est = a.est_v[c];
+        level = a.roundoff_v[c];
+        allowance = av;
+      }
+    }
+    if (!velocity || !(est <= 2 * level)) return "";
+    return "it is below the round-off of the window's velocity estimate (at "
+           "step " +
+           Text(a.dt) + " the estimate " + Text(est) +
+           " is within twice the round-off level eps*sum|D_N|*max|x| = " +
+           Text(level) + " of (Dx)_N; the allowance is " + Text(allowance) +
+           "); use a larger tolerance";
   }
 
   double InitialStep(const InitialData& state) const {

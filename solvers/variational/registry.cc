@@ -163,14 +163,16 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
     mo.solve = options;
     mo.tolerance = {tol, tol};
     mo.keep_trajectory = false;
-    double max_error = 0;
+    double max_error = 0, max_error_v = 0;
     const MarchResult m = Guarded(
         [&] {
           return problem.march(
-              grid, mo, [&](double t, const double* x, const double*) {
+              grid, mo, [&](double t, const double* x, const double* v) {
                 const ExactState e = problem.exact(t);
                 for (std::size_t c = 0; c < e.x.size(); ++c)
                   max_error = std::max(max_error, std::abs(x[c] - e.x[c]));
+                for (std::size_t c = 0; c < e.v.size(); ++c)
+                  max_error_v = std::max(max_error_v, std::abs(v[c] - e.v[c]));
               });
         },
         [](MarchResult& f, const std::string& why) {
@@ -193,6 +195,7 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
                             ? nan
                             : maxdiff(m.end_velocity, exact.v);
     r.max_error = max_error;
+    r.max_error_v = exact.v.empty() ? nan : max_error_v;
     r.error_estimate = m.error_estimate;
     r.iterations = m.iterations;
     r.fallbacks = m.fallbacks;

@@ -67,6 +67,7 @@ struct WindowAttempt {
   int iterations = 0, corrections = 0;
   State x_end{}, v_end{};    // x_N, (Dx)_N
   State est_x{}, est_v{};    // embedded estimates of their errors
+  State roundoff_v{};        // the round-off level of (Dx)_N (window_engine.h)
   CorrectedEnd<double> end;  // hand-off
   std::vector<double> x, v;  // nodes (node-major, points·d), if kept
   double distance = 0;       // worst |H − P| / allowed of check 2
@@ -189,6 +190,7 @@ class WindowSolver {
       a.v_end = o.v_end;
       a.est_x = o.est_x;
       a.est_v = o.est_v;
+      a.roundoff_v = o.roundoff_v;
       for (int i = 0; i < n; ++i)
         for (int c = 0; c < d; ++c)
           a.deviation =
