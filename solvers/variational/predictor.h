@@ -79,8 +79,9 @@ class Predictor {
                         "more than 10^5 steps in one window (a stiff or "
                         "singular equation of motion)");
           if (!Finite(stepper.current_state()))
-            return Fail(r, "non-finite state at τ = " +
-                               std::to_string(stepper.current_time()));
+            return Fail(r, "non-finite state " +
+                               std::to_string(stepper.current_time()) +
+                               " after the window's start");
         }
         stepper.calc_state(tau[i], s);
         Store(s, i, x, v, scale_x, scale_v);
