@@ -36,7 +36,15 @@ class BandedLu {
       pivots_.resize(n_);
       int kl = a.lower(), ku = a.upper(), ld = a.leading_dimension(), info = 0;
       dgbtrf_(&n_, &n_, &kl, &ku, a.data(), &ld, pivots_.data(), &info);
-      return info == 0;
+      if (info != 0) return false;
+      // U's diagonal inverted once per factorization instead of once per
+      // substitution: a window takes 4–5 substitutions per factorization,
+      // and the divisions were a tenth of its time.
+      inverse_diagonal_.resize(n_);
+      const int kd = kl + ku;
+      for (int j = 0; j < n_; ++j)
+        inverse_diagonal_[j] = 1.0 / a.data()[std::size_t(j) * ld + kd];
+      return true;
     } else {
       sparse_ = a.ToSparse();
       lu_.analyzePattern(sparse_);
@@ -48,7 +56,7 @@ class BandedLu {
   // b <- A^{-1} b.
   void Solve(Real* b) const {
     if constexpr (std::is_same_v<Real, double>) {
-      Substitute(*a_, pivots_.data(), b);
+      Substitute(*a_, pivots_.data(), b, inverse_diagonal_.data());
     } else {
       Eigen::Map<Eigen::Matrix<Real, Eigen::Dynamic, 1>> v(b, n_);
       v = lu_.solve(Eigen::Matrix<Real, Eigen::Dynamic, 1>(v));
@@ -57,12 +65,15 @@ class BandedLu {
 
   // b <- A^{-1} b from dgbtrf's factors of A (in `lu`, pivots 1-based): the
   // two substitutions of LAPACK's dgbtrs (trans = 'N', one right-hand side),
-  // in the same order of operations. dgbtrs itself makes two BLAS calls per
-  // row (dswap, dger) and solves U with dtbsv; on the narrow band of a
-  // marched window (about 50 rows, kl + ku about 10) that call overhead was
-  // 45% of the run time of bench/march_bench (perf), for a few hundred flops.
+  // in the same order of operations, with U's diagonal divided or, when
+  // `inverse_diagonal` is given, multiplied by its inverse. dgbtrs itself
+  // makes two BLAS calls per row (dswap, dger) and solves U with dtbsv; on
+  // the narrow band of a marched window (about 50 rows, kl + ku about 10)
+  // that call overhead was 45% of the run time of bench/march_bench (perf),
+  // for a few hundred flops.
   static void Substitute(const linalg::BandedMatrix<double>& lu,
-                         const int* pivots, double* b) {
+                         const int* pivots, double* b,
+                         const double* inverse_diagonal = nullptr) {
     const int n = lu.size(), kl = lu.lower(), ld = lu.leading_dimension();
     const int kd = kl + lu.upper();  // row of the diagonal in the band
     const double* ab = lu.data();
@@ -79,7 +90,10 @@ class BandedLu {
     for (int j = n - 1; j >= 0; --j) {
       if (b[j] == 0.0) continue;
       const double* u = ab + std::size_t(j) * ld;
-      b[j] /= u[kd];
+      if (inverse_diagonal)
+        b[j] *= inverse_diagonal[j];
+      else
+        b[j] /= u[kd];
       const double t = b[j];
       for (int i = std::max(0, j - kd); i < j; ++i) b[i] -= t * u[kd + i - j];
     }
@@ -89,6 +103,7 @@ class BandedLu {
   int n_ = 0;
   linalg::BandedMatrix<Real>* a_ = nullptr;
   std::vector<int> pivots_;
+  std::vector<double> inverse_diagonal_;
   Eigen::SparseMatrix<Real> sparse_;
   Eigen::SparseLU<Eigen::SparseMatrix<Real>, Eigen::COLAMDOrdering<int>> lu_;
 };
