@@ -1,0 +1,140 @@
+// How far a window's embedded error estimates can be trusted: for every
+// accepted window of a march, the estimates |M⁻¹λ4| (of x_N) and
+// |(Dx)_N − M⁻¹(−λ3)| (of (Dx)_N) against the true local errors, measured
+// against the exact local flow from the window's own initial state
+// (Dormand–Prince at 1e-15, predictor.h); and the true error of the
+// handed-off state against the estimate, which the a-posteriori check
+// (window_solve.h) and the controller rely on bounding it.
+//
+// Windows whose true error is below 1e3·ε of the solution's size are left out
+// of the ratios (round-off, not truncation). Rows: operator, march (uniform
+// grid of 4097 points, or error control at 1e-6; SBP21 at 1e-4), problem;
+// columns: windows,
+// the 10/50/90 % quantiles and the extremes of the ratios.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "problems/anharmonic.h"
+#include "problems/kepler.h"
+#include "problems/pendulum.h"
+#include "solvers/variational/march.h"
+
+using namespace vivp;
+
+namespace {
+
+struct Quantiles {
+  double lo = NAN, p10 = NAN, p50 = NAN, p90 = NAN, hi = NAN;
+};
+
+Quantiles Of(std::vector<double> v) {
+  Quantiles q;
+  if (v.empty()) return q;
+  std::sort(v.begin(), v.end());
+  auto at = [&](double f) { return v[std::size_t(f * double(v.size() - 1))]; };
+  q.lo = v.front();
+  q.p10 = at(0.1);
+  q.p50 = at(0.5);
+  q.p90 = at(0.9);
+  q.hi = v.back();
+  return q;
+}
+
+struct Ratios {
+  std::vector<double> x, v, handoff_x, handoff_v;
+  long long windows = 0;
+};
+
+template <class P>
+void Collect(const P& problem, const InitialData& init, double t_end,
+             const std::string& op, bool tolerance, Ratios& r) {
+  constexpr int d = P::kDim;
+  Predictor<P> exact(problem, 2);
+  MarchOptions o;
+  o.keep_trajectory = false;
+  o.stabilize = false;
+  // SBP21's last node has a first-order velocity: under error control its
+  // step scales like the tolerance, and 1e-6 would take 10^8 nodes here.
+  const double level = op == "sbp21" ? 1e-4 : 1e-6;
+  if (tolerance) o.tolerance = {level, level};
+  o.window_observer = [&](const WindowSample& s) {
+    std::vector<double> tau(s.points), xs(s.points * d), vs(s.points * d);
+    for (int i = 0; i < s.points; ++i) tau[i] = s.dt * double(i);
+    exact.Run(s.x0, s.v0, tau.data(), s.points, 1e-15, 1e-15, xs.data(),
+              vs.data());
+    const double* xe = &xs[(s.points - 1) * d];
+    const double* ve = &vs[(s.points - 1) * d];
+    double scale_x = 0, scale_v = 0;
+    for (int c = 0; c < d; ++c) {
+      scale_x = std::max(scale_x, std::abs(xe[c]));
+      scale_v = std::max(scale_v, std::abs(ve[c]));
+    }
+    const double floor_x = 1e3 * 2.2e-16 * scale_x;
+    const double floor_v = 1e3 * 2.2e-16 * scale_v;
+    double ex = 0, ev = 0, hx = 0, hv = 0, est_x = 0, est_v = 0;
+    for (int c = 0; c < d; ++c) {
+      ex = std::max(ex, std::abs(s.x_end[c] - xe[c]));
+      ev = std::max(ev, std::abs(s.v_end[c] - ve[c]));
+      hx = std::max(hx, std::abs(s.handoff_x[c] - xe[c]));
+      hv = std::max(hv, std::abs(s.handoff_v[c] - ve[c]));
+      est_x = std::max(est_x, s.est_x[c]);
+      est_v = std::max(est_v, s.est_v[c]);
+    }
+    ++r.windows;
+    if (ex > floor_x) r.x.push_back(est_x / ex);
+    if (ev > floor_v) r.v.push_back(est_v / ev);
+    if (est_x > floor_x) r.handoff_x.push_back(hx / est_x);
+    if (est_v > floor_v) r.handoff_v.push_back(hv / est_v);
+  };
+  Grid g{.op = op, .points = 4097, .t_end = t_end};
+  const MarchResult m = MarchIvp(problem, init, g, o);
+  if (!m.status.converged)
+    std::printf("# %s, %s: %s\n", op.c_str(),
+                tolerance ? "tolerance" : "uniform", m.status.reason.c_str());
+}
+
+void Row(const char* op, const char* march, const char* what, const Ratios& r) {
+  auto cell = [](const Quantiles& q) {
+    std::printf(" | %8.2g %8.2g %8.2g %8.2g %8.2g", q.lo, q.p10, q.p50, q.p90,
+                q.hi);
+  };
+  std::printf("%-6s %-9s %-10s %7lld", op, march, what, r.windows);
+  cell(Of(r.x));
+  cell(Of(r.v));
+  std::printf(" | %8.2g %8.2g\n", Of(r.handoff_x).hi, Of(r.handoff_v).hi);
+}
+
+}  // namespace
+
+int main() {
+  std::printf(
+      "# estimate / true local error of x_N and (Dx)_N: min 10%% 50%% 90%% "
+      "max; then the largest true error of the hand-off over the estimate "
+      "(position, velocity)\n");
+  std::printf("%-6s %-9s %-10s %7s | %44s | %44s | %17s\n", "op", "march",
+              "problem", "windows", "|M^-1 l4| / err x_N",
+              "|(Dx)_N + M^-1 l3| / err (Dx)_N", "hand-off / est.");
+  problems::Kepler e06, e09;
+  e09.e = 0.9;
+  for (const char* op : {"sbp21", "sbp42", "sbp63", "sbp84"}) {
+    for (bool tolerance : {false, true}) {
+      const char* march = !tolerance                   ? "uniform"
+                          : std::string(op) == "sbp21" ? "tol 1e-4"
+                                                       : "tol 1e-6";
+      Ratios a, p, k6, k9, all;
+      Collect(problems::Anharmonic{}, {{1.0}, {0.3}}, 10.0, op, tolerance, a);
+      Collect(problems::Pendulum{}, {{0.0}, {1.0}}, 20.0, op, tolerance, p);
+      Collect(e06, {{0.4, 0.0}, {0.0, 2.0}}, 10 * M_PI, op, tolerance, k6);
+      Collect(e09, {{0.1, 0.0}, {0.0, std::sqrt(19.0)}}, 2 * M_PI, op,
+              tolerance, k9);
+      Row(op, march, "anharmonic", a);
+      Row(op, march, "pendulum", p);
+      Row(op, march, "kepler 0.6", k6);
+      Row(op, march, "kepler 0.9", k9);
+      std::fflush(stdout);
+    }
+  }
+}
