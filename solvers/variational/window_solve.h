@@ -121,6 +121,18 @@ class WindowSolver {
     // solution: its own error bound must be half of that, which a window
     // of many periods (a stiff spring refined for stability: 11 periods in
     // one window) needs a tighter tolerance for than the default.
+    if (uniform) {
+      // Absolute accuracy relative to the state's size: a decaying
+      // solution (the damped oscillator after 10^4 periods, amplitude
+      // 1e-4 and below) would otherwise fail the error bound below and
+      // retry at ever tighter tolerances (measured: 3.8 predictor steps per
+      // window at 2^22 points against 1.6 at 2^18).
+      double size = 0;
+      for (int c = 0; c < d; ++c)
+        size = std::max(
+            {size, std::abs(x0[c]), std::abs(v0[c]) * dt * double(points - 1)});
+      predictor_tol.absolute = std::max(predictor_tol.absolute * size, 1e-300);
+    }
     PredictorReport pr;
     for (int tries = 0;; ++tries) {
       pr = predictor_.Run(x0.data(), v0.data(), tau_.data(), points,
