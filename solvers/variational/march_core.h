@@ -1,0 +1,158 @@
+// What both ways of marching share (march.h): solving and checking a window
+// (window_solve.h), accepting it — its report, its nodes to the observer and
+// the trajectory, the hand-off — and reporting a failure with its window,
+// reason and residual.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solvers/variational/march_types.h"
+#include "solvers/variational/window_solve.h"
+
+namespace vivp::detail {
+
+template <class P>
+class MarchCore {
+ public:
+  static constexpr int d = P::kDim;
+  using Attempt = WindowAttempt<d>;
+
+  MarchCore(const P& problem, const Grid& grid, const MarchOptions& options,
+            const NodeObserver& observer, MarchResult& out, int order,
+            int min_points)
+      : problem_(problem),
+        grid_(grid),
+        options_(options),
+        observer_(observer),
+        out_(out),
+        order_(order),
+        min_points_(min_points),
+        solver_(problem, grid.op, grid.sigma0, options, order) {}
+
+  std::vector<double> xs_, vs_;  // kept nodes, node-major
+
+ protected:
+  bool WantNodes() const { return bool(observer_) || options_.keep_trajectory; }
+
+  // `uniform` adds the resolution check of window_solve.h.
+  Attempt Solve(const InitialData& state, int points, double dt, bool fresh,
+                Tolerance predictor, bool uniform) {
+    Attempt a = solver_.Solve(state, points, dt, fresh, WantNodes(), predictor,
+                              uniform);
+    out_.predictor_steps += a.predictor_steps;
+    if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
+    if (!fresh && a.failure == WindowFailure::kNewton) {
+      // Chord steps on an earlier window's factorization did not converge:
+      // once more with a Jacobian of this window's own.
+      ++out_.fallbacks;
+      return Solve(state, points, dt, true, predictor, uniform);
+    }
+    return a;
+  }
+
+  // Records an accepted window, emits the nodes i·stride of its solve grid
+  // for i < count, at the times time_of(i), and hands off to `state`.
+  template <class TimeOf>
+  void Accept(const Attempt& a, InitialData& state, double t_start, int stride,
+              long long count, int depth, double err, const TimeOf& time_of) {
+    WindowReport w;
+    w.t_start = t_start;
+    w.t_end = t_start + a.dt * double(a.points - 1);
+    w.points = a.points;
+    w.iterations = a.iterations;
+    w.corrections = a.corrections;
+    w.converged = true;
+    w.fallbacks = depth;
+    w.dt = a.dt;
+    w.error_norm = err;
+    for (int c = 0; c < d; ++c) {
+      w.position_error_estimate =
+          std::max(w.position_error_estimate, a.est_x[c]);
+      w.velocity_error_estimate =
+          std::max(w.velocity_error_estimate, a.est_v[c]);
+    }
+    // Per-window reports grow with the number of windows: kept with the
+    // trajectory only, so a streamed march stays O(window) in memory.
+    if (options_.keep_trajectory) out_.windows.push_back(w);
+    ++out_.window_count;
+    out_.iterations += a.iterations;
+    out_.corrections += a.corrections;
+    out_.error_estimate += w.position_error_estimate;
+    out_.min_step = out_.min_step == 0 ? a.dt : std::min(out_.min_step, a.dt);
+    out_.max_step = std::max(out_.max_step, a.dt);
+    if (WantNodes()) {
+      double x[d], v[d];
+      for (long long i = 0; i < count; ++i) {
+        for (int c = 0; c < d; ++c) {
+          x[c] = a.X(int(i * stride), c);
+          v[c] = a.V(int(i * stride), c);
+        }
+        Emit(time_of(i), x, v);
+      }
+    }
+    out_.points += count;
+    InitialData start;
+    if (options_.window_observer) start = state;
+    for (int c = 0; c < d; ++c) {
+      const bool corrected = options_.hand_off == HandOff::kCorrected;
+      state.x[c] = corrected ? a.end.position[c] : a.x_end[c];
+      if (order_ == 2) state.v[c] = corrected ? a.end.velocity[c] : a.v_end[c];
+    }
+    if (options_.window_observer)
+      options_.window_observer({w.t_start, w.t_end, a.dt, a.points,
+                                start.x.data(), start.v.data(), a.x_end.data(),
+                                a.v_end.data(), state.x.data(), state.v.data(),
+                                a.est_x.data(), a.est_v.data()});
+  }
+
+  // A failed window: the march reports where, why, and the residual left
+  // (for a window that was solved but rejected by a check, the residual of
+  // the solution it rejected).
+  void FailAt(double t0, double t1, const Attempt& a) {
+    out_.last_residual = a.residual;
+    out_.failed_at = t0;
+    const bool solved = a.failure == WindowFailure::kCheck ||
+                        a.failure == WindowFailure::kCoarse;
+    std::ostringstream s;
+    s << "window [" << t0 << ", " << t1 << "] "
+      << (solved ? "was solved but rejected: " : "did not converge: ") << a.why
+      << "; last residual ‖F‖∞ = " << a.residual;
+    out_.status = {false, s.str()};
+  }
+
+  static std::string Text(double v) {
+    std::ostringstream s;
+    s.precision(3);
+    s << v;
+    return s.str();
+  }
+
+  const P& problem_;
+  const Grid& grid_;
+  const MarchOptions& options_;
+  const NodeObserver& observer_;
+  MarchResult& out_;
+  int order_;
+  int min_points_;
+
+ private:
+  void Emit(double t, const double* x, const double* v) {
+    if (observer_) observer_(t, x, v);
+    if (options_.keep_trajectory) {
+      out_.t.push_back(t);
+      for (int c = 0; c < d; ++c) {
+        xs_.push_back(x[c]);
+        vs_.push_back(v[c]);
+      }
+    }
+  }
+
+  WindowSolver<P> solver_;
+};
+
+}  // namespace vivp::detail
