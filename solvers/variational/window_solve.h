@@ -2,30 +2,7 @@
 // predictor's path is the Newton start, and the converged window is accepted
 // only if an independent integration agrees with it.
 //
-// The checks, in order (each failure names itself in `failure`):
-//  1. finite: no NaN or infinity leaves a window, in any node or in the
-//     hand-off state;
-//  2. consistency: the hand-off state H = (x_N + M⁻¹λ4, M⁻¹(−λ3)) and the
-//     predictor's end state P, both estimates of the exact local flow, must
-//     agree within what their error estimates allow,
-//        |H_x − P_x| ≤ κ(e_x + ε_x) + s,   |H_v − P_v| ≤ κ(e_v + ε_v) + s,
-//     with e the window's embedded estimates of the *lower*-order values x_N,
-//     (Dx)_N (H is more accurate than they are), ε the predictor's error
-//     bound, κ = 2 and s a round-off allowance. Measured on resolved windows
-//     (SBP42–84, four problems, Δt over a factor 32): |H_x − exact| ≤ 0.53 e_x
-//     and |H_v − exact| ≤ 0.26 e_v. A window on another branch of the
-//     discrete equations is off by the size of the solution.
-//     SBP21's position estimate is not one (ratio to the true error of x_N
-//     0.02–19, and the corrected x_N is not more accurate than x_N), so SBP21
-//     bounds the position by the velocity estimate, e_x = L·e_v over the
-//     window's length L (the velocity estimate is reliable: ratio 0.9–1.1);
-//  3. resolution (uniform grids only, where no tolerance bounds the
-//     estimates): the window's nodes and hand-off may deviate from the
-//     predictor by at most 1 % of the solution's size (a measurement, not an
-//     estimate: the predictor is accurate to 1e-6 there, which also makes it
-//     valid for SBP21). Kepler e = 0.9 on a uniform grid of 4001 points for
-//     10 orbits passes 1 and 2 at pericentre (its estimates are honest) with
-//     local errors of 4–23 % — an answer with error 5.7.
+// The checks are those of window_checks.h.
 #pragma once
 
 #include <algorithm>
@@ -39,49 +16,10 @@
 
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/predictor.h"
+#include "solvers/variational/window_checks.h"
 #include "solvers/variational/window_engine.h"
 
 namespace vivp::detail {
-
-// kUnderResolved: Δt·ω above the stability limit (a finer grid helps);
-// kCoarse: check 3 (a uniform grid that does not resolve the solution).
-enum class WindowFailure {
-  kNone,
-  kNewton,
-  kUnderResolved,
-  kCheck,
-  kPredictor,
-  kCoarse
-};
-
-// A solved window before it is accepted: nodes on its solve grid, the
-// hand-off state, the estimates and the outcome of the checks.
-template <int d>
-struct WindowAttempt {
-  using State = std::array<double, d>;
-  WindowFailure failure = WindowFailure::kNone;
-  std::string why;  // empty on success
-  double residual = std::numeric_limits<double>::quiet_NaN();
-  int points = 0;
-  double dt = 0;
-  int iterations = 0, corrections = 0;
-  State x_end{}, v_end{};    // x_N, (Dx)_N
-  State est_x{}, est_v{};    // embedded estimates of their errors
-  State roundoff_v{};        // the round-off level of (Dx)_N (window_engine.h)
-  CorrectedEnd<double> end;  // hand-off
-  std::vector<double> x, v;  // nodes (node-major, points·d), if kept
-  double distance = 0;       // worst |H − P| / allowed of check 2
-  double deviation = 0;      // max over nodes of |x_i − P(t_i)|
-  long predictor_steps = 0;
-  bool ok() const { return failure == WindowFailure::kNone; }
-  bool split_helps() const {
-    return failure == WindowFailure::kNewton ||
-           failure == WindowFailure::kCheck ||
-           failure == WindowFailure::kPredictor;
-  }
-  double X(int i, int c) const { return x[i * d + c]; }
-  double V(int i, int c) const { return v[i * d + c]; }
-};
 
 template <class P>
 class WindowSolver {
@@ -150,14 +88,14 @@ class WindowSolver {
     const double* pend_x = &px_[(points - 1) * d];
     const double* pend_v = &pv_[(points - 1) * d];
     if (!SolveNewton(a, initial, x0, v0, fresh, nodes)) return a;
-    std::string why = Finite(a);
+    std::string why = CheckFinite(a, order_);
     WindowFailure failure = WindowFailure::kNewton;
     if (why.empty()) {
-      why = Consistent(a, pr, pend_x, pend_v);
+      why = CheckConsistent(a, pr, pend_x, pend_v, order_, op_ == "sbp21");
       failure = WindowFailure::kCheck;
     }
     if (why.empty() && uniform) {
-      why = Resolved(a, pr, pend_x);
+      why = CheckResolved(a, pr, pend_x, px_, options_.max_relative_deviation);
       failure = WindowFailure::kCoarse;
     }
     if (why.empty()) return a;
@@ -300,93 +238,6 @@ class WindowSolver {
     a.why = std::move(why);
     return a;
   }
-
-  std::string Finite(const Attempt& a) const {
-    bool ok = true;
-    for (double v : a.x) ok = ok && std::isfinite(v);
-    for (double v : a.v) ok = ok && std::isfinite(v);
-    for (int c = 0; c < d; ++c) {
-      ok = ok && std::isfinite(a.end.position[c]) && std::isfinite(a.x_end[c]);
-      if (order_ == 2)
-        ok =
-            ok && std::isfinite(a.end.velocity[c]) && std::isfinite(a.v_end[c]);
-    }
-    return ok ? "" : "the converged window holds non-finite values";
-  }
-
-  // Check 2 (see the top of this file).
-  std::string Consistent(Attempt& a, const PredictorReport& pr,
-                         const double* pend_x, const double* pend_v) const {
-    constexpr double kKappa = 2.0;
-    const double length = a.dt * double(a.points - 1);
-    double sx = 0, sv = 0;
-    for (int c = 0; c < d; ++c) {
-      sx = std::max({sx, std::abs(pend_x[c]), std::abs(a.end.position[c])});
-      if (order_ == 2)
-        sv = std::max({sv, std::abs(pend_v[c]), std::abs(a.end.velocity[c])});
-    }
-    // Round-off of a window's solution grows with its points (the reduced
-    // system's condition number grows like N³; refinement keeps it near
-    // N·eps, measured with SBP84 at Δt = 0.001 on Kepler e = 0.9).
-    const double roundoff = 64.0 * a.points * kEps;
-    double worst = 0;
-    std::ostringstream why;
-    for (int c = 0; c < d; ++c) {
-      const double est = op_ == "sbp21" && order_ == 2
-                             ? std::max(a.est_x[c], length * a.est_v[c])
-                             : a.est_x[c];
-      const double dx = std::abs(a.end.position[c] - pend_x[c]);
-      const double bx = kKappa * (est + pr.error_x) + roundoff * (sx + 1e-300);
-      worst = std::max(worst, dx / bx);
-      if (!(dx <= bx) && why.str().empty())
-        why << "position " << c << " differs by " << dx;
-      if (order_ == 2) {
-        const double dv = std::abs(a.end.velocity[c] - pend_v[c]);
-        const double bv =
-            kKappa * (a.est_v[c] + pr.error_v) + roundoff * (sv + 1e-300);
-        worst = std::max(worst, dv / bv);
-        if (!(dv <= bv) && why.str().empty())
-          why << "velocity " << c << " differs by " << dv;
-      }
-    }
-    a.distance = worst;
-    if (why.str().empty()) return "";
-    std::ostringstream s;
-    s << "a-posteriori check failed: the window's end state and an "
-         "independent integration of the Euler-Lagrange equations disagree ("
-      << why.str() << ", " << Short(worst)
-      << " times what their error estimates allow): another branch of the "
-         "discrete equations, or a grid too coarse for its error estimate";
-    return s.str();
-  }
-
-  // Check 3: the window's measured local error against the solution's size.
-  std::string Resolved(const Attempt& a, const PredictorReport& pr,
-                       const double* pend_x) const {
-    const double rho = options_.max_relative_deviation;
-    double scale = 0, dev = a.deviation;
-    for (double v : px_) scale = std::max(scale, std::abs(v));
-    for (int c = 0; c < d; ++c)
-      dev = std::max(dev, std::abs(a.end.position[c] - pend_x[c]));
-    if (dev <= rho * scale + pr.error_x) return "";
-    std::ostringstream s;
-    s << "under-resolved: the window's nodes deviate from an independent "
-         "integration of the Euler-Lagrange equations by "
-      << Short(dev) << ", " << Short(100 * dev / scale)
-      << " % of the solution's size (at most " << Short(100 * rho)
-      << " %); the uniform grid is too coarse here: use more points, or a "
-         "tolerance so that the grid adapts";
-    return s.str();
-  }
-
-  static std::string Short(double v) {
-    std::ostringstream s;
-    s.precision(3);
-    s << v;
-    return s.str();
-  }
-
-  static constexpr double kEps = std::numeric_limits<double>::epsilon();
 
   const P& problem_;
   std::string op_;
