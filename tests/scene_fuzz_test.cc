@@ -232,7 +232,11 @@ BOOST_AUTO_TEST_CASE(MutatedScenes_AreReadOrRejectedCleanly) {
       continue;
     }
     // Solve the small ones (the reference is the reader's business only).
+    // Under error control the march chooses the nodes: a short span only
+    // (the shipped Kepler e = 0.9 scene takes 97518 nodes over ten orbits).
     if (scene.points > 400 || scene.t_end - scene.t_start > 1e4) continue;
+    if (scene.method.tolerance.enabled() && scene.t_end - scene.t_start > 2)
+      continue;
     scene.output.reference = "none";
     scene.output.diagnostics.erase(
         std::remove(scene.output.diagnostics.begin(),

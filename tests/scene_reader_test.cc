@@ -310,6 +310,70 @@ BOOST_AUTO_TEST_CASE(BadInput_TooManyPointsForAGlobalSolve) {
              "= 48)");
 }
 
+BOOST_AUTO_TEST_CASE(Tolerance_MarchesUnderErrorControl) {
+  // A number sets both parts; a table each; the march then chooses the
+  // nodes ([time] has no points) in windows of 48 unless slab_points says.
+  const Scene a =
+      ParseScene(With(18, "", {"[method]", "tolerance = 1e-6"}), "a.toml");
+  BOOST_TEST(a.method.tolerance.absolute == 1e-6);
+  BOOST_TEST(a.method.tolerance.relative == 1e-6);
+  BOOST_TEST(a.method.slab_points == 48);
+  BOOST_TEST(a.points == 0);
+  const Scene b =
+      ParseScene(With(18, "",
+                      {"[method]", "slab_points = 32",
+                       "tolerance = {absolute = 1e-9, relative = 1e-7}"}),
+                 "b.toml");
+  BOOST_TEST(b.method.tolerance.absolute == 1e-9);
+  BOOST_TEST(b.method.tolerance.relative == 1e-7);
+  BOOST_TEST(b.method.slab_points == 32);
+  BOOST_TEST(SceneJson(b)["method"]["tolerance"]["relative"] == 1e-7);
+  BOOST_TEST(SceneJson(b)["time"]["points"].is_null());
+}
+
+BOOST_AUTO_TEST_CASE(BadInput_Tolerance) {
+  BOOST_TEST(ErrorOf(With(0, "", {"[method]", "tolerance = 1e-6"})) ==
+             "bad.toml:18:10: points and [method] tolerance exclude each "
+             "other: the tolerance chooses the grid; expected no points "
+             "(error control), or no tolerance (a uniform grid of that many "
+             "points)");
+  BOOST_TEST(ErrorOf(With(18, "", {"[method]", "tolerance = 0"})) ==
+             "bad.toml:20:13: a tolerance of zero cannot be met; expected "
+             "tolerance = 1e-6 (absolute and relative) or tolerance = "
+             "{absolute = 1e-8, relative = 1e-6}, numbers in [0, 1) with at "
+             "least one positive");
+  BOOST_TEST(ErrorOf(With(18, "", {"[method]", "tolerance = 1.5"}))
+                 .find("bad.toml:20:13: 'tolerance' = 1.5 is outside [0, 1)") ==
+             0u);
+  BOOST_TEST(ErrorOf(With(18, "", {"[method]", "tolerance = -1e-6"}))
+                 .find("is outside [0, 1)") != std::string::npos);
+  BOOST_TEST(ErrorOf(With(18, "", {"[method]", "tolerance = 1e-16"})) ==
+             "bad.toml:20:13: a relative tolerance of 1e-16 is beyond double "
+             "precision; expected a relative tolerance of at least 1e-14 (or "
+             "0 with an absolute one)");
+  BOOST_TEST(ErrorOf(With(18, "",
+                          {"[method]",
+                           "tolerance = {relative = 1e-6, "
+                           "absolut = 1e-8}"}))
+                 .find("unknown key 'absolut' in tolerance (did you mean "
+                       "'absolute'?)") != std::string::npos);
+  BOOST_TEST(
+      ErrorOf(
+          With(18, "", {"[method]", "slab_points = 0", "tolerance = 1e-6"})) ==
+      "bad.toml:20:15: slab_points = 0 asks for one global solve, but "
+      "a tolerance marches in windows; expected slab_points >= 8 or no "
+      "slab_points (48)");
+  BOOST_TEST(ErrorOf(With(
+                 18, "", {"[method]", "kind = \"rk4\"", "tolerance = 1e-6"})) ==
+             "bad.toml:21:13: 'tolerance' applies to kind = \"variational\" "
+             "only; expected no 'tolerance' for the stepper 'rk4'");
+  BOOST_TEST(
+      ErrorOf(With(
+          18, "", {"[method]", "solver = \"ceres-lm\"", "tolerance = 1e-6"})) ==
+      "bad.toml:21:13: solver = \"ceres-lm\" solves globally and "
+      "cannot march; expected no tolerance, or solver = \"newton\"");
+}
+
 BOOST_AUTO_TEST_CASE(BadInput_EveryMessageHasTheFileLineColumnForm) {
   // The form the CLI promises, on a sample of the cases above.
   const std::regex form(R"(^bad\.toml:\d+:\d+: [^\n]+; expected [^\n]+$)");

@@ -592,6 +592,14 @@ class Reader {
       tol.absolute = tol.relative = value(n, "tolerance");
     }
     if (!tol.enabled()) Fail(n, "a tolerance of zero cannot be met", expected);
+    // Double precision ends near 1e-14 relative; the windows' estimates
+    // (round-off of the closure velocity) well before.
+    if (tol.relative > 0 && tol.relative < 1e-14)
+      Fail(n,
+           "a relative tolerance of " + FormatNumber(tol.relative) +
+               " is beyond double precision",
+           "expected a relative tolerance of at least 1e-14 (or 0 with an "
+           "absolute one)");
     if (s.method.solver == "ceres-lm")
       Fail(n, "solver = \"ceres-lm\" solves globally and cannot march",
            "expected no tolerance, or solver = \"newton\"");
