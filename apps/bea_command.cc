@@ -344,13 +344,7 @@ int RunVerify(BeaOptions o) {
     j["slopes"] = nlohmann::json::object();
     for (std::size_t c = 0; c < sweep.slopes.size(); ++c)
       j["slopes"][sweep.names[c]] = JsonNumber(sweep.slopes[c]);
-    if (o.json == "-") {
-      std::cout << j.dump(1) << "\n";
-    } else {
-      std::ofstream f(o.json);
-      f << j.dump(1) << "\n";
-      if (!f) throw std::runtime_error("cannot write " + o.json);
-    }
+    WriteJson(o.json, j);
   }
   return 0;
 }

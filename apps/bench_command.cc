@@ -142,13 +142,7 @@ int RunBench(const BenchOptions& o) {
                               {"invariants", problem->invariant_names},
                               {"repeats", o.repeats},
                               {"rows", rows}};
-    if (o.json == "-") {
-      std::cout << j.dump(2) << "\n";
-    } else {
-      std::ofstream f(o.json);
-      f << j.dump(2) << "\n";
-      if (!f) throw std::runtime_error("cannot write " + o.json);
-    }
+    WriteJson(o.json, j, 2);
   }
   return 0;
 }

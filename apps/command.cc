@@ -3,12 +3,24 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 namespace vivp::app {
 
 nlohmann::json JsonNumber(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+void WriteJson(const std::string& target, const nlohmann::json& j, int indent) {
+  if (target == "-") {
+    std::cout << j.dump(indent) << "\n";
+    return;
+  }
+  std::ofstream f(target);
+  f << j.dump(indent) << "\n";
+  if (!f) throw std::runtime_error("cannot write " + target);
 }
 
 namespace fs = std::filesystem;

@@ -37,6 +37,11 @@ void CheckOutputFile(const std::filesystem::path& file, bool force);
 // not exist, an error that overflowed): JSON has no NaN or infinity.
 nlohmann::json JsonNumber(double v);
 
+// Writes `j` (indented by `indent`) to standard output for target "-", else
+// to the file `target`; a file that cannot be written is an error.
+void WriteJson(const std::string& target, const nlohmann::json& j,
+               int indent = 1);
+
 // CLI11 validators with messages that name the valid values.
 CLI::Validator FiniteNumber();
 CLI::Validator WholeNumberAtLeast(long long minimum, const std::string& hint);

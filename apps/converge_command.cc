@@ -96,16 +96,6 @@ Path ParseSolver(const std::string& s) {
                    "' is not a solver; valid: newton, full-newton, ceres-lm");
 }
 
-void WriteJson(const ConvergeOptions& o, const nlohmann::json& j) {
-  if (o.json == "-") {
-    std::cout << j.dump(1) << "\n";
-  } else {
-    std::ofstream f(o.json);
-    f << j.dump(1) << "\n";
-    if (!f) throw std::runtime_error("cannot write " + o.json);
-  }
-}
-
 // `vivp converge --tolerance LIST`: the march under error control for each
 // tolerance, the achieved errors, the points used and the time.
 int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
@@ -174,15 +164,15 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
                       {"seconds", r.seconds},
                       {"converged", r.converged},
                       {"status", r.reason}});
-    WriteJson(o, {{"problem", problem.name},
-                  {"operator", o.op},
-                  {"solver", o.solver},
-                  {"t_end", o.t_end},
-                  {"slab_points", window},
-                  {"rows", rows},
-                  {"tracking", TrackingJson(study.tracking)},
-                  {"tracking_max", TrackingJson(study.tracking_max)},
-                  {"tracking_max_v", TrackingJson(study.tracking_max_v)}});
+    WriteJson(o.json, {{"problem", problem.name},
+                       {"operator", o.op},
+                       {"solver", o.solver},
+                       {"t_end", o.t_end},
+                       {"slab_points", window},
+                       {"rows", rows},
+                       {"tracking", TrackingJson(study.tracking)},
+                       {"tracking_max", TrackingJson(study.tracking_max)},
+                       {"tracking_max_v", TrackingJson(study.tracking_max_v)}});
   }
   if (!all_converged) {
     std::cerr << "vivp: some runs did not converge (see the table)\n";
@@ -293,7 +283,7 @@ int RunConverge(const ConvergeOptions& o) {
         {"rows", rows},
         {"orders", OrdersJson(study.orders)},
         {"orders_true_dt", OrdersJson(study.orders_true_dt)}};
-    WriteJson(o, j);
+    WriteJson(o.json, j);
   }
   if (!all_converged) {
     std::cerr << "vivp: some solves did not converge (see the table)\n";

@@ -123,14 +123,8 @@ int RunSpectrum(const SpectrumOptions& o) {
                               {"sigma0", o.sigma0},
                               {"D", SpectrumJson(sd)},
                               {"Dbar", SpectrumJson(sdbar)}};
-    if (o.json == "-") {
-      std::cout << j.dump(1) << "\n";
-    } else {
-      std::ofstream f(o.json);
-      f << j.dump(1) << "\n";
-      if (!f) throw std::runtime_error("cannot write " + o.json);
-      human << "  wrote " << o.json << "\n";
-    }
+    WriteJson(o.json, j);
+    if (o.json != "-") human << "  wrote " << o.json << "\n";
   }
   if (!o.plot.empty()) {
     const std::string label = std::string(d.name());

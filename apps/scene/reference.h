@@ -162,18 +162,11 @@ class OdeReference : public Reference {
 
  private:
   void Rhs(const std::vector<double>& y, std::vector<double>& dy) const {
-    dy.resize(y.size());
-    if (order_ == 2) {
-      const auto a = action::Acceleration(problem_, y.data(), y.data() + d);
-      for (int c = 0; c < d; ++c) {
-        dy[c] = y[d + c];
-        dy[d + c] = a[c];
-      }
-    } else {
-      const auto vel = action::FirstOrderVelocity(
-          problem_, y.data(), Eigen::Matrix<double, d, 1>::Zero());
-      for (int c = 0; c < d; ++c) dy[c] = vel[c];
-    }
+    // A first-order state holds x only; the equations take (x, ẋ).
+    double full[2 * d] = {}, rate[2 * d];
+    std::copy(y.begin(), y.end(), full);
+    action::EquationsOfMotion(problem_, order_, full, rate, velocity_);
+    dy.assign(rate, rate + y.size());
   }
 
   const P& problem_;
@@ -181,6 +174,7 @@ class OdeReference : public Reference {
   double t_, dt_;
   long steps_ = 0;
   std::vector<double> y_;
+  mutable action::StateVector<P> velocity_ = action::StateVector<P>::Zero();
   boost::numeric::odeint::controlled_runge_kutta<
       boost::numeric::odeint::runge_kutta_fehlberg78<Vec>>
       stepper_;

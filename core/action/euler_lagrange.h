@@ -68,4 +68,27 @@ StateVector<P> FirstOrderVelocity(const P& problem, const double* x,
   return guess;
 }
 
+// The equations of motion as a first-order system: y = (x, ẋ) ↦ (ẋ, ẍ) for a
+// second-order problem, y = x ↦ ẋ (the velocity part of dy zero) for a
+// first-order one; y and dy hold 2d values. `velocity` is the first-order
+// velocity of the last call, the Newton start of the next.
+template <class P>
+void EquationsOfMotion(const P& problem, int order, const double* y, double* dy,
+                       StateVector<P>& velocity) {
+  constexpr int d = P::kDim;
+  if (order == 2) {
+    const StateVector<P> a = Acceleration(problem, y, y + d);
+    for (int c = 0; c < d; ++c) {
+      dy[c] = y[d + c];
+      dy[d + c] = a[c];
+    }
+  } else {
+    velocity = FirstOrderVelocity(problem, y, velocity);
+    for (int c = 0; c < d; ++c) {
+      dy[c] = velocity[c];
+      dy[d + c] = 0.0;
+    }
+  }
+}
+
 }  // namespace vivp::action

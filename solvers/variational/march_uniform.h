@@ -125,7 +125,6 @@ class UniformMarch : public MarchCore<P> {
                                      : grid_.t_start + dt * double(index);
   }
 
-
   int refine_ = 1;  // solve grid = requested grid refined this many times
 };
 

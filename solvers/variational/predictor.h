@@ -114,19 +114,7 @@ class Predictor {
 
  private:
   void Rhs(const State& y, State& dy) const {
-    if (order_ == 2) {
-      const auto a = action::Acceleration(problem_, y.data(), y.data() + d);
-      for (int c = 0; c < d; ++c) {
-        dy[c] = y[d + c];
-        dy[d + c] = a[c];
-      }
-    } else {
-      velocity_ = action::FirstOrderVelocity(problem_, y.data(), velocity_);
-      for (int c = 0; c < d; ++c) {
-        dy[c] = velocity_[c];
-        dy[d + c] = 0.0;
-      }
-    }
+    action::EquationsOfMotion(problem_, order_, y.data(), dy.data(), velocity_);
   }
 
   void Store(const State& s, int i, double* x, double* v, double& scale_x,

@@ -100,6 +100,18 @@ auto Guarded(F&& run, OnFailure&& on_failure) -> decltype(run()) {
   }
 }
 
+// The counts and status of a march, into its row.
+void FromMarch(const MarchResult& m, ConvergenceRow& r) {
+  r.error_estimate = m.error_estimate;
+  r.iterations = m.iterations;
+  r.fallbacks = m.fallbacks;
+  r.windows = m.window_count;
+  r.rejected = m.rejected;
+  r.seconds = m.seconds;
+  r.converged = m.status.converged;
+  r.reason = m.status.reason;
+}
+
 }  // namespace
 
 ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
@@ -139,12 +151,7 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
       m.end_velocity.empty() || exact.v.empty()
           ? nan
           : maxdiff([&](std::size_t c) { return m.end_velocity[c]; }, exact.v);
-  r.error_estimate = m.error_estimate;
-  r.iterations = m.iterations;
-  r.fallbacks = m.fallbacks;
-  r.seconds = m.seconds;
-  r.converged = m.status.converged;
-  r.reason = m.status.reason;
+  FromMarch(m, r);
   return r;
 }
 
@@ -196,14 +203,7 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
                             : maxdiff(m.end_velocity, exact.v);
     r.max_error = max_error;
     r.max_error_v = exact.v.empty() ? nan : max_error_v;
-    r.error_estimate = m.error_estimate;
-    r.iterations = m.iterations;
-    r.fallbacks = m.fallbacks;
-    r.windows = m.window_count;
-    r.rejected = m.rejected;
-    r.seconds = m.seconds;
-    r.converged = m.status.converged;
-    r.reason = m.status.reason;
+    FromMarch(m, r);
     study.rows.push_back(r);
   }
   FitTracking(study, round_off_floor);
