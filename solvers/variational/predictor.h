@@ -16,7 +16,8 @@
 // Its error: each accepted step keeps the local error estimate of component i
 // below tol_abs + tol_rel·(|y_i| + h|ẏ_i|) (odeint's default error checker);
 // over k steps of a window, where the flow does not amplify much, the error is
-// at most about k times that. error_x/error_v report that bound.
+// about k times that at the steps' ends and more at the nodes between them
+// (the dense output). error_x/error_v report 10·k times that allowance.
 #pragma once
 
 #include <array>
@@ -90,7 +91,12 @@ class Predictor {
     } catch (const std::exception& e) {
       return Fail(r, e.what());
     }
-    const double k = double(std::max(r.steps, 1L));
+    // Ten times the steps' error allowance: the allowance bounds the error
+    // estimate of dopri5's 4th-order member at each step's end, while the
+    // nodes come from its dense output between steps (measured: at 1e-4 an
+    // end velocity 2.5 times off the undamped bound, anharmonic oscillator,
+    // SBP84 grid of 4097 points).
+    const double k = 10.0 * double(std::max(r.steps, 1L));
     r.error_x = k * (tol_abs + tol_rel * (scale_x + span * scale_v));
     r.error_v = k * (tol_abs + tol_rel * scale_v * 2);
     return r;

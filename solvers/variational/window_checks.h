@@ -22,7 +22,7 @@
 //     estimates): the window's nodes and hand-off may deviate from the
 //     predictor by at most 1 % of the solution's size (a measurement, not an
 //     estimate, so valid for SBP21 too: the predictor tightens its tolerance
-//     until its own error bound is half of that). Kepler e = 0.9 on a
+//     until its own error bound is within that). Kepler e = 0.9 on a
 //     uniform grid of 4001 points for 10 orbits passes 1 and 2 at pericentre
 //     (its estimates are honest) with local errors of 4–23 % — an answer
 //     with error 5.7.

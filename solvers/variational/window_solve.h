@@ -56,7 +56,7 @@ class WindowSolver {
     px_.resize(std::size_t(points) * d);
     pv_.resize(std::size_t(points) * d);
     // On a uniform grid check 3 compares with the predictor to 1 % of the
-    // solution: its own error bound must be half of that, which a window
+    // solution: its own error bound must be within that, which a window
     // of many periods (a stiff spring refined for stability: 11 periods in
     // one window) needs a tighter tolerance for than the default.
     if (uniform) {
@@ -80,7 +80,7 @@ class WindowSolver {
       if (!pr.ok || !uniform || tries == 3) break;
       double scale = 0;
       for (double v : px_) scale = std::max(scale, std::abs(v));
-      if (pr.error_x <= 0.5 * options_.max_relative_deviation * scale) break;
+      if (pr.error_x <= options_.max_relative_deviation * scale) break;
       predictor_tol.absolute *= 1e-2;
       predictor_tol.relative *= 1e-2;
     }
