@@ -226,10 +226,22 @@ int RunConverge(const ConvergeOptions& o) {
         << "seconds\n";
   bool all_converged = true;
   for (const auto& r : study.rows) {
+    // A run that did not converge has no errors to speak of: a march that
+    // stopped in its first window would show the untouched zeros of its end
+    // state, a global solve the errors of its last iterate.
+    auto error = [&](double e) {
+      std::ostringstream s;
+      if (r.converged)
+        s << std::scientific << std::setprecision(2) << e;
+      else
+        s << "-";
+      return s.str();
+    };
     human << std::setw(7) << r.points << std::scientific << std::setprecision(2)
-          << std::setw(11) << r.dt << std::setw(11) << r.err_x << std::setw(11)
-          << r.err_v << std::setw(11) << r.err_x_corrected << std::setw(11)
-          << r.err_p_corrected << std::defaultfloat << std::setw(6)
+          << std::setw(11) << r.dt << std::setw(11) << error(r.err_x)
+          << std::setw(11) << error(r.err_v) << std::setw(11)
+          << error(r.err_x_corrected) << std::setw(11)
+          << error(r.err_p_corrected) << std::defaultfloat << std::setw(6)
           << r.iterations << std::setw(10) << std::setprecision(3) << r.seconds
           << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
     all_converged = all_converged && r.converged;
