@@ -1,6 +1,6 @@
-// `vivp bea derive` and `vivp bea verify`: backward error analysis (seed 003)
-// from the command line. The engine (solvers/bea) derives; this file parses,
-// prints and writes.
+// `vivp bea derive` and `vivp bea verify`: backward error analysis
+// (McLachlan & Offen 2023) from the command line. The engine (solvers/bea)
+// derives; this file parses, prints and writes.
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -370,8 +370,8 @@ Runner AddBeaCommand(CLI::App& app) {
   auto o = std::make_shared<BeaOptions>();
   CLI::App* bea = app.add_subcommand(
       "bea",
-      "Backward error analysis (seed 003): modified equations, "
-      "Hamiltonians, symplectic forms and charges");
+      "Backward error analysis (McLachlan & Offen 2023): modified "
+      "equations, Hamiltonians, symplectic forms and charges");
   bea->require_subcommand(1);
   CLI::App* derive = bea->add_subcommand(
       "derive", "Print the modified equation, H_mod, omega, charges, L_mod");

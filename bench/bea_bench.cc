@@ -1,4 +1,4 @@
-// Backward error analysis timings (issue 7, acceptance 5): wall time of each
+// Backward error analysis timings (docs/bea.md): wall time of each
 // derivation by method, dimension and order, and the rate of numerical
 // evaluation of modified quantities along a trajectory. Prints tables only.
 #include <cstdio>

@@ -1,8 +1,8 @@
-// Composition must not cost at run time (issue 5): a Lagrangian composed of
-// effects chosen at run time (problems/composed.h) against the hand-written
-// functor of the same system, same solve, same run: reduced Newton, SBP42,
-// Nt = 2^16, median of 7 runs each (interleaved). Also prints the largest
-// difference of the two trajectories.
+// Composition must not cost at run time (README "Effects"): a Lagrangian
+// composed of effects chosen at run time (problems/composed.h) against the
+// hand-written functor of the same system, same solve, same run: reduced
+// Newton, SBP42, Nt = 2^16, median of 7 runs each (interleaved). Also prints
+// the largest difference of the two trajectories.
 #include <cmath>
 #include <cstdio>
 

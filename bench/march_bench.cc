@@ -1,13 +1,13 @@
-// Time-slab marching at scale (issue 4, "Scale"):
+// Time-slab marching at scale (docs/method.md §8):
 //  1. window length: points per second and end error against W at Nt = 2^18,
 //     the measurement behind MarchOptions' default window;
 //  2. throughput: points per second of the marched solve (output streamed to
 //     an observer, nothing kept) and of one global reduced solve, Nt = 2^10 …
 //     2^22, with the peak resident memory of each run.
-// Δt is fixed per problem (damped 0.0125, the late-time resolution of seed
-// 000 Fig. 14; anharmonic 0.0024), so a larger Nt is a longer horizon. A
-// global Newton solve of the anharmonic problem over a long horizon does not
-// converge from the linear initial guess; those rows say so.
+// Δt is fixed per problem (damped 0.0125, the late-time resolution of
+// Rothkopf & Nordström 2023, Fig. 14; anharmonic 0.0024), so a larger Nt is a
+// longer horizon. A global Newton solve of the anharmonic problem over a long
+// horizon does not converge from the linear initial guess; those rows say so.
 //
 // Every measurement runs in a forked child: its peak RSS (getrusage) is then
 // that run's own, and a run that exhausts memory cannot take the table down.

@@ -1,8 +1,9 @@
-// Which automatic differentiation for the pointwise density (issue 3): Ceres
-// Jets or Eigen's AutoDiffScalar, first order (the residual ∇S) and nested
-// second order (the Newton Jacobian), on the damped-oscillator density
-// f(x1, v1, x2, v2) = L1 − L2 + Λ. Nested Jets cannot take a user's `T(0.5)`
-// (Ceres 2.1), so the density here lifts its constants explicitly for both.
+// Which automatic differentiation for the pointwise density
+// (docs/method.md §4): Ceres Jets or Eigen's AutoDiffScalar, first order (the
+// residual ∇S) and nested second order (the Newton Jacobian), on the
+// damped-oscillator density f(x1, v1, x2, v2) = L1 − L2 + Λ. Nested Jets
+// cannot take a user's `T(0.5)` (Ceres 2.1), so the density here lifts its
+// constants explicitly for both.
 #include <chrono>
 #include <cstdio>
 

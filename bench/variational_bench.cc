@@ -1,4 +1,4 @@
-// Cost of the variational solver against Nt (issue 3, acceptance 6-7):
+// Cost of the variational solver against Nt (docs/method.md §5):
 //  1. the three paths to the critical point (reduced Newton, full Newton,
 //     Ceres LM) on the anharmonic problem, Nt = 2^5 ... 2^20 (LM until it
 //     stops converging): iterations, seconds, attained error at t = 1;

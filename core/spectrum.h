@@ -1,5 +1,5 @@
-// Spectrum analysis of SBP operators D and of the regularized D̄ (paper
-// Figs. 3-4, formulation notes §1.2).
+// Spectrum analysis of SBP operators D and of the regularized D̄ (Rothkopf &
+// Nordström 2023, Figs. 3-4; docs/method.md §2).
 //
 // The zero eigenvalue of D sits in a single Jordan block, so a floating-point
 // eigensolver returns a ring of m eigenvalues of radius ~(eps |D|)^(1/m)

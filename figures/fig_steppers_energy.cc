@@ -1,10 +1,10 @@
-// Energy error over a long run (issue 6): Kepler e = 0.6, 1000 orbits at 100
-// steps per orbit, the largest |H − H₀| within each orbit (sampling once per
-// orbit instead would see the symplectic methods' bounded oscillation at a
-// phase that slips with the phase error, which reads as a drift). RK4
-// drifts linearly;
-// the symplectic and symmetric methods stay bounded; the discrete gradient
-// holds H to round-off (its curve sits at 1e-14 … 1e-12).
+// Energy error over a long run (docs/steppers.md §5): Kepler e = 0.6, 1000
+// orbits at 100 steps per orbit, the largest |H − H₀| within each orbit
+// (sampling once per orbit instead would see the symplectic methods' bounded
+// oscillation at a phase that slips with the phase error, which reads as a
+// drift). RK4 drifts linearly; the symplectic and symmetric methods stay
+// bounded; the discrete gradient holds H to round-off (its curve sits at
+// 1e-14 … 1e-12).
 // Usage: fig_steppers_energy [OUTPUT_DIR]
 #include <cmath>
 #include <iostream>

@@ -1,9 +1,9 @@
 // NLDNLS |z_n| at a late time, discrete gradient against implicit midpoint at
-// equal cost (the setting of seed 004 Figs. 1–2, at a size that runs in
-// seconds): 32 periodic sites, κ = 1, double-height sech data with A = 1,
-// t = 200. Midpoint runs at δt = 0.05 (halved while its Newton iteration
-// does not converge); the discrete gradient's step is chosen so that its
-// wall time matches midpoint's (both measured here; the title gives both
+// equal cost (the setting of LeMesurier 2012, Figs. 1–2, at a size that runs in
+// seconds; docs/steppers.md §4): 32 periodic sites, κ = 1, double-height sech
+// data with A = 1, t = 200. Midpoint runs at δt = 0.05 (halved while its Newton
+// iteration does not converge); the discrete gradient's step is chosen so that
+// its wall time matches midpoint's (both measured here; the title gives both
 // costs). The reference is Gauss–Legendre s = 3 at δt = 0.01.
 // Usage: fig_steppers_nldnls_profile [OUTPUT_DIR]
 #include <chrono>

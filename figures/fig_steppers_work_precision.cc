@@ -1,5 +1,5 @@
-// Work–precision diagrams (issue 6): final-time error against wall time
-// (median of 5 runs, log–log) for every applicable method on every problem
+// Work–precision diagrams (docs/steppers.md): final-time error against wall
+// time (median of 5 runs, log–log) for every applicable method on every problem
 // of the work–precision harness (harmonic, pendulum, anharmonic, damped —
 // variational solver only —, Kepler e = 0.6 and e = 0.9, Hénon–Heiles,
 // NLDNLS); one PNG per problem. The variational solver's curves

@@ -1,7 +1,7 @@
 // The anharmonic oscillator of Rothkopf & Nordström (2023), Sec. 4.2:
 //   x'' + kappa x^3 = 0,  kappa = 20, x(0) = 1, x'(0) = 0.3.
 // (The paper does not state x'(0); 0.3 reproduces its convergence orders,
-// formulation notes §1.5.)
+// docs/method.md §11.)
 #pragma once
 
 #include <boost/math/special_functions/ellint_1.hpp>

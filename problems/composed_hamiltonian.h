@@ -2,7 +2,8 @@
 // for the steppers of solvers/steppers:
 //   H(q, p) = ½ pᵀM⁻¹p + V(q),  V = −Σ (the effects' Lagrangian terms at q),
 // M the sum of the kinetic effects' masses. Separable, so Störmer–Verlet
-// applies. For the discrete gradient of seed 004 §5.2, H is written through
+// applies. For the discrete gradient (LeMesurier 2012, §5.2;
+// docs/steppers.md §3), H is written through
 //   ŷ = (½pᵀM⁻¹p, |q|², q₀, …, q_{D−1}):
 // potentials of r² (spring without centre, quartic, central, Gaussian well)
 // through ŷ₁, the others (gravity, pendulum, chain, spring with centre)

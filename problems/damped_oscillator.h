@@ -3,7 +3,7 @@
 //   x(0) = 1, ẋ(0) = 0.
 // Eq. (43) as printed solves μẍ + ξẋ + κx = 0 (x(1) ≈ 0.156); eqs. (41)-(42)
 // suggest 2κ. We follow eq. (43); the convergence orders are the same either
-// way (formulation §1.5).
+// way (docs/method.md §11).
 #pragma once
 
 #include <cmath>

@@ -1,8 +1,8 @@
-// Effects: the terms a physical system is composed of (issue 5). A scene
-// lists effects; the Lagrangian is their sum and the non-conservative term Λ
-// the sum of the dissipative ones, so an effect that is not listed costs
-// nothing. Each effect is a small struct with defaults for every parameter
-// and either
+// Effects: the terms a physical system is composed of (README "Effects"). A
+// scene lists effects; the Lagrangian is their sum and the non-conservative
+// term Λ the sum of the dissipative ones, so an effect that is not listed costs
+// nothing. Each effect is a small struct with defaults for every parameter and
+// either
 //   template <int D, class T> T Lagrangian(const T* x, const T* v) const
 // (a term of L, D degrees of freedom) or
 //   template <int D, class T> T Lambda(const T* x1, const T* v1,
@@ -90,7 +90,8 @@ struct Spring {
   }
 };
 
-// Quartic (anharmonic) potential V = ¼κ|x|⁴ (seed 000 eq. 33 for D = 1).
+// Quartic (anharmonic) potential V = ¼κ|x|⁴ (Rothkopf & Nordström 2023,
+// eq. 33, for D = 1).
 struct Quartic {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;
@@ -134,9 +135,10 @@ struct Central {
   }
 };
 
-// Gaussian well (seed 003's experiment with a = 1): L gets +U with
-// U = a·exp(−|x|²/2) (seed 003 writes ẍ = ∇U, L = ½|ẋ|² + U), i.e. the
-// potential energy −U, attractive for a > 0.
+// Gaussian well (the experiment of McLachlan & Offen 2023 with a = 1): L
+// gets +U with U = a·exp(−|x|²/2) (McLachlan & Offen write ẍ = ∇U,
+// L = ½|ẋ|² + U: docs/bea.md §1), i.e. the potential energy −U, attractive
+// for a > 0.
 struct GaussianWell {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double amplitude = 1.0;
@@ -176,7 +178,8 @@ struct Chain {
   }
 };
 
-// Linear damping F = −ξẋ through Galley's Λ = −ξ ẋ₊·x₋ (seed 000 eq. 40).
+// Linear damping F = −ξẋ through Galley's Λ = −ξ ẋ₊·x₋ (Rothkopf &
+// Nordström 2023, eq. 40).
 struct Damping {
   double xi = 0.1;
   template <int D, class T>
@@ -185,8 +188,8 @@ struct Damping {
   }
 };
 
-// First-order growth ẋ = κx (seed 000 eqs. 37–38): L = −½κ|x|² with
-// Λ = ẋ₊·x₋, which together give the first-order equation.
+// First-order growth ẋ = κx (Rothkopf & Nordström 2023, eqs. 37–38):
+// L = −½κ|x|² with Λ = ẋ₊·x₋, which together give the first-order equation.
 struct Growth {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;

@@ -3,7 +3,7 @@
 //   ẋ = κx,  L = −½κx²,  Λ = ẋ₊x₋ with ẋ₊ = (ẋ1 + ẋ2)/2, x₋ = x1 − x2;
 //   κ = 5/2, x(0) = 1.
 // Λ with ẋ₊ built from both regularized paths equals the paper's
-// ½ D̄(x̄1 + x̄2) with affine entry 2 (formulation §1.4).
+// ½ D̄(x̄1 + x̄2) with affine entry 2 (docs/method.md §3).
 #pragma once
 
 #include <cmath>

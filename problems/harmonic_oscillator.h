@@ -1,7 +1,7 @@
 // The harmonic oscillator H = ½p² + ½ω²q². Linear, so it cannot reveal
 // nonlinear defects (orders are fitted on the pendulum and Kepler instead);
-// with large ω it is the stiff spring of issue 6, acceptance 5: an explicit
-// method is unstable once hω exceeds its stability interval (RK4: 2√2).
+// with large ω it is a stiff spring: an explicit method is unstable once hω
+// exceeds its stability interval (RK4: 2√2).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // The Hénon–Heiles system H = ½|p|² + ½|q|² + q₁²q₂ − q₂³/3 with
-// q = p = (0.18, 0.18) (formulation §2), energy ≈ 0.0718, regular orbit.
+// q = p = (0.18, 0.18) (docs/steppers.md §5), energy ≈ 0.0718, regular orbit.
 // No closed-form solution: references come from Gauss–Legendre (s = 3) at a
 // much smaller step (stated where used).
 #pragma once

@@ -1,4 +1,4 @@
-// The Kepler problem H = ½|p|² − 1/|q| (formulation §2): eccentricity e,
+// The Kepler problem H = ½|p|² − 1/|q| (docs/steppers.md §5): eccentricity e,
 // q(0) = (1−e, 0), p(0) = (0, √((1+e)/(1−e))), H = −½, period 2π. e = 0.6 is
 // the standard benchmark, e = 0.9 the hard case (speed √19 at pericentre).
 #pragma once
@@ -36,7 +36,7 @@ struct Kepler {
            T(1.0) / sqrt(q[0] * q[0] + q[1] * q[1]);
   }
 
-  // Through quadratic invariants (seed 004 §5.2): ŷ = (|p|², |q|²),
+  // Through quadratic invariants (LeMesurier 2012, §5.2): ŷ = (|p|², |q|²),
   // Ĥ = ½ŷ₀ − ŷ₁^{−½}. Both are rotation invariant, so the discrete gradient
   // keeps the angular momentum as well.
   static constexpr int kInvariantCount = 2;

@@ -1,15 +1,16 @@
-// The non-local discrete NLS of seed 004, eq. (6), on a periodic chain of
-// kSites sites (z_{n+kSites} = z_n):
+// The non-local discrete NLS of LeMesurier 2012, eq. (6), on a periodic
+// chain of kSites sites (z_{n+kSites} = z_n):
 //   i ż_n + κ(z_{n+1} + z_{n−1}) + (½|z_{n−1}|² + |z_n|² + ½|z_{n+1}|²) z_n =
 //   0.
-// Convention (formulation §2): (6) as printed is ż = i ∂H/∂z* for
+// Convention (docs/steppers.md §4): (6) as printed is ż = i ∂H/∂z* for
 //   H = κ Σ σ_n + ½ Σ ρ_n(ρ_n + ρ_{n+1}),  ρ_n = |z_n|², σ_n = z_n* z_{n+1} +
 //   c.c.,
 // i.e. eq. (12) with κ → −κ. With z_n = (q_n − i p_n)/√2 this is Hamilton's
 // q̇ = ∂H/∂p, ṗ = −∂H/∂q, with ρ_n = ½(q_n² + p_n²), σ_n = q_n q_{n+1} + p_n
 // p_{n+1}. Initial data: the NLS soliton A sech(A(n − n₀)) e^{−ivn/2} at double
-// height (seed 004 §6), centred at n₀ = kSites/2. Default A = 0.5 (height 1,
-// about four sites wide); A = 2 is the seed's large-amplitude case.
+// height (LeMesurier 2012, §6), centred at n₀ = kSites/2. Default A = 0.5
+// (height 1, about four sites wide); A = 2 is the large-amplitude case of
+// LeMesurier 2012.
 #pragma once
 
 #include <cmath>

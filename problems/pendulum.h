@@ -1,7 +1,7 @@
-// The mathematical pendulum H = ½p² − cos q (formulation §2), q(0) = 0,
+// The mathematical pendulum H = ½p² − cos q (docs/steppers.md §5), q(0) = 0,
 // p(0) = 1: a libration with energy −½, turning points ±π/3.
-// Reference (formulation §2): q(2π) = −0.443944662290259,
-//                             p(2π) =  0.897846803312944.
+// Reference (docs/steppers.md §5): q(2π) = −0.443944662290259,
+//                                  p(2π) =  0.897846803312944.
 #pragma once
 
 #include <array>
@@ -32,8 +32,9 @@ struct Pendulum {
     return T(0.5) * p[0] * p[0] - cos(q[0]);
   }
 
-  // Through invariants for the discrete gradient (seed 004 §5.2): ŷ = (p², q)
-  // (the second is affine, which the engine allows), Ĥ = ½ŷ₀ − cos ŷ₁.
+  // Through invariants for the discrete gradient (LeMesurier 2012, §5.2):
+  // ŷ = (p², q) (the second is affine, which the engine allows),
+  // Ĥ = ½ŷ₀ − cos ŷ₁.
   static constexpr int kInvariantCount = 2;
   template <class T>
   void QuadraticInvariants(const T* q, const T* p, T* y) const {

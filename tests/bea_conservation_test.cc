@@ -1,7 +1,6 @@
-// Acceptance 3 and 4 of issue 7: modified energies and momenta along
-// computed trajectories, measured as fitted log-log slopes of the maximum
-// deviation against h, plus the agreement of the compiled evaluation with
-// GiNaC's own.
+// Modified energies and momenta along computed trajectories (docs/bea.md §5),
+// measured as fitted log-log slopes of the maximum deviation against h, plus
+// the agreement of the compiled evaluation with GiNaC's own.
 #define BOOST_TEST_MODULE bea_conservation
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -41,7 +40,7 @@ double Slope(const Sweep& s, const std::string& name) {
   return s.slopes[Column(s, name)];
 }
 
-// The paper's experiment (formulation.md section 3): U = exp(-|x|^2/2),
+// The paper's experiment (docs/bea.md §5): U = exp(-|x|^2/2),
 // A = -0.2 I, x(0) = (1, -1), x'(0) = (0.1, -0.2), T = 150.
 struct Lmm4Experiment {
   BeaResult r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)),
@@ -171,8 +170,8 @@ BOOST_AUTO_TEST_CASE(Lmm4Gaussian_H4AndI4_FallAsH6InTheAsymptoticRange) {
   BOOST_TEST(std::abs(Slope(sweep, "H0") - 2) <= 0.2);
 }
 
-BOOST_AUTO_TEST_CASE(Lmm4Gaussian_ReproducesTheSweepOfFormulation) {
-  // formulation.md §3: H4's maximum deviation over T = 150 is about 4e-4,
+BOOST_AUTO_TEST_CASE(Lmm4Gaussian_ReproducesTheDocumentedSweep) {
+  // docs/bea.md §5: H4's maximum deviation over T = 150 is about 4e-4,
   // 2.5e-5, 2e-6, 3e-8 and 1.4e-9 at h = 0.2, 0.15, 0.1, 0.05, 0.03. With
   // 12th-order differences (x' recovered well below H4's deviation even at
   // h = 0.2) the measured values are 4.50e-4, 2.66e-5, 2.08e-6, 3.02e-8 and
@@ -189,10 +188,10 @@ BOOST_AUTO_TEST_CASE(Lmm4Gaussian_ReproducesTheSweepOfFormulation) {
   }
 }
 
-// Known shortfall: over the full range 0.3 ... 0.03 of the issue the fitted
-// slopes are 6.8 (H4) and 7.4 (I4), against 6.1 over 0.15 ... 0.03 (above):
-// at h >= 0.2 the truncated series is not yet asymptotic (H4's deviation at
-// h = 0.3 equals H2's). formulation.md's own numbers (4e-4 at h = 0.2 ...
+// Known shortfall: over the full range 0.3 ... 0.03 the fitted slopes are
+// 6.8 (H4) and 7.4 (I4), against 6.1 over 0.15 ... 0.03 (above): at
+// h >= 0.2 the truncated series is not yet asymptotic (H4's deviation at
+// h = 0.3 equals H2's). The numbers of docs/bea.md §5 (4e-4 at h = 0.2 ...
 // 1.4e-9 at 0.03), which this implementation reproduces (above), give 6.44
 // fitted over 0.2 ... 0.03 (6.6 between the end points): outside 6 ± 0.4
 // too, and steeper the larger the first step. The local slopes of I4
@@ -216,7 +215,8 @@ BOOST_AUTO_TEST_CASE(Lmm4Gaussian_FourthOrderDifferences_StallNearH4) {
 }
 
 BOOST_AUTO_TEST_CASE(Lmm4Gaussian_PaperStep_DeviationsOrderedH0H2H4) {
-  // Seed 003 Fig. 1 at h = 0.15: each correction reduces the deviation.
+  // McLachlan & Offen 2023, Fig. 1 at h = 0.15: each correction reduces the
+  // deviation.
   Lmm4Experiment e;
   auto sweep = ConservationSweep(e.r, e.q, e.potential, e.Setup(6), {0.15});
   const auto& d = sweep.rows[0].max_deviation;

@@ -1,5 +1,5 @@
-// Acceptance 1 of issue 7: the engine reproduces the closed forms of
-// formulation.md section 3 (seed 003, Section 4 and Appendix A) exactly --
+// The backward-error engine reproduces the closed forms of docs/bea.md §3
+// and §4 (McLachlan & Offen 2023, Section 4 and Appendix A) exactly --
 // every comparison expands the difference to zero.
 #define BOOST_TEST_MODULE bea_formulas
 #include <boost/test/unit_test.hpp>
@@ -72,7 +72,7 @@ BOOST_AUTO_TEST_CASE(
     StormerVerlet_ModifiedHamiltonianFormAndLagrangian_MatchAppendixA) {
   auto r = Derive(MakeStormerVerlet(1), AtOrder(4));
   JetSpace& jet = *r.jet;
-  // Formulation.md writes W = -U; W^(k) = -U_k.
+  // docs/bea.md §4 writes W = -U; W^(k) = -U_k.
   const ex W1 = -jet.U({1}), W2 = -jet.U({2}), W3 = -jet.U({3}),
            W4 = -jet.U({4}), W = -jet.U({0}), v = r.v(0);
   const ex H[] = {

@@ -1,4 +1,4 @@
-// Acceptance 6 of issue 7: bad input gets an error that names the problem
+// Backward error analysis: bad input gets an error that names the problem
 // and the fix; instability gets an explanation.
 #define BOOST_TEST_MODULE bea_input
 #include <boost/test/unit_test.hpp>

@@ -1,5 +1,5 @@
-// Acceptance 2 of issue 7: the engine's four self-checks hold to the computed
-// order (h^6 in d = 2) for every method, and a wrong answer is caught.
+// The backward-error engine's four self-checks hold to the computed order
+// (h^6 in d = 2) for every method, and a wrong answer is caught.
 // Order h^8 runs are labelled "slow" and disabled by default; they are
 // registered with ctest only when configured with -DVIVP_SLOW_TESTS=ON
 // (label slow).

@@ -1,6 +1,6 @@
 // Effects composed at run time (problems/composed.h) against the hand-written
-// problems of seed 000 and the comparison set: the same L and Λ values at
-// scattered points, and the same trajectory from the solver.
+// problems of Rothkopf & Nordström 2023 and the comparison set: the same L
+// and Λ values at scattered points, and the same trajectory from the solver.
 #define BOOST_TEST_MODULE composed_effects
 #include <boost/test/unit_test.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Time-slab marching (issue 4, hard cases 1-3; formulation §1.8).
+// Time-slab marching and its hard cases (docs/method.md §8).
 #define BOOST_TEST_MODULE march
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
@@ -59,7 +59,7 @@ BOOST_DATA_TEST_CASE(DampedMarch_KeepsTheGlobalOrder,
   // Three step sizes around Δt = 0.0125. SBP21's phase error over 33 periods
   // is not yet asymptotic at Δt = 0.05 (slope 2.10 on 0.05…0.0125), so its
   // range starts one halving later; SBP42 on 0.025…0.00625 gives 4.46
-  // (the error falls faster than h⁴ there). Both are in the closing note.
+  // (the error falls faster than h⁴ there).
   const bool sbp21 = std::string(op) == "sbp21";
   const std::vector<long long> grids =
       sbp21 ? std::vector<long long>{8193, 16385, 32769}
@@ -82,7 +82,8 @@ BOOST_DATA_TEST_CASE(DampedMarch_KeepsTheGlobalOrder,
 
 BOOST_AUTO_TEST_CASE(AnharmonicSbp42_MarchesToTenWithoutFallback) {
   // Proves: where one global Newton solve from the linear guess diverges
-  // (formulation §1.8), windows of <= 32 points converge unaided, at order 4.
+  // (docs/method.md §8), windows of <= 32 points converge unaided, at
+  // order 4.
   problems::Anharmonic a;
   std::vector<double> dt, err;
   for (long long n : {1025, 2049, 4097}) {
@@ -155,7 +156,7 @@ BOOST_AUTO_TEST_CASE(ImpossibleWindow_IsReportedWithReason) {
   BOOST_TEST(r.status.reason.find("did not converge") != std::string::npos);
   BOOST_TEST(r.status.reason.find("no convergence in 1 iterations") !=
              std::string::npos);
-  // ... and with the residual it left (issue 4, hard case 7).
+  // ... and with the residual it left.
   BOOST_TEST_MESSAGE("reason: " << r.status.reason);
   BOOST_TEST(std::isfinite(r.last_residual));
   BOOST_TEST(r.last_residual > 1e-8);  // far from a solution after 1 step
@@ -220,10 +221,10 @@ BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {
 }
 
 BOOST_AUTO_TEST_CASE(ExtremeGrid_DampedMarchedOver2To20Points) {
-  // Proves: marching handles Nt = 2²⁰ streamed (issue 4, hard case 6; the
-  // peak RSS, 4.3 MB streamed against 208 MB for the global solve, is
-  // measured by bench/march_bench). Δt = 0.0125, T = 13107.2 (≈ 2950
-  // periods): the handed-off corrected end state stays on the exact decay.
+  // Proves: marching handles Nt = 2²⁰ streamed (the peak RSS, 4.3 MB
+  // streamed against 208 MB for the global solve, is measured by
+  // bench/march_bench). Δt = 0.0125, T = 13107.2 (≈ 2950 periods): the
+  // handed-off corrected end state stays on the exact decay.
   MarchOptions o;
   o.window_points = 48;
   o.keep_trajectory = false;

@@ -1,5 +1,5 @@
 // The regularized operator D̄ (Rothkopf & Nordström 2023, Sec. 3.2, eq. 29
-// corrected per formulation notes §1.3).
+// corrected as in docs/method.md §3).
 #define BOOST_TEST_MODULE sbp_regularized
 #include <boost/test/unit_test.hpp>
 #include <limits>

@@ -1,4 +1,4 @@
-// `vivp run` and `vivp scene check` end to end (issue 5): the default scene
+// `vivp run` and `vivp scene check` end to end: the default scene
 // writes its files and a readable summary; an existing directory is not
 // overwritten without --force; bad input exits 2 with one line and leaves no
 // output behind; a solve that does not converge is reported, exit status 1.
@@ -62,8 +62,8 @@ BOOST_AUTO_TEST_CASE(DefaultScene_WritesItsFilesAndSummary) {
   BOOST_TEST(j["points"].get<int>() == 2048);
   BOOST_TEST(j["scene"]["method"]["operator"].get<std::string>() == "sbp42");
   BOOST_TEST(j["solver"]["iterations"].get<int>() == 1);  // linear: one step
-  // Seed 000, Fig. 14–15 (formulation §1.5): bounded, max path error ≈ 4e-3,
-  // energy 0.5 → 0.374 following the exact decay.
+  // Rothkopf & Nordström (2023), Figs. 14–15 (docs/method.md §11): bounded,
+  // max path error ≈ 4e-3, energy 0.5 → 0.374 following the exact decay.
   BOOST_TEST(j["reference"]["max_error_x"].get<double>() <= 5e-3);
   BOOST_TEST(j["reference"]["max_error_x"].get<double>() > 1e-4);
   const auto& e = j["diagnostics"]["energy"];
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(DefaultScene_WritesItsFilesAndSummary) {
       boost::test_tools::tolerance(0.001));
   // The energy column follows the exact decay: measured max deviation 7.8e-4
   // at every node before the last. The last node carries the boundary
-  // closure of D in v = (Dx)_N (formulation §1.6: the equation of motion
+  // closure of D in v = (Dx)_N (docs/method.md §11: the equation of motion
   // holds except at the last two nodes); there it is 4.4e-3.
   {
     std::istringstream in(Slurp(out / "diagnostics.csv"));

@@ -1,8 +1,8 @@
-// Mutation test of the scene reader (issue 5, acceptance 4): the shipped
-// scenes and the default scene, mutated at random — bytes deleted, inserted
-// or flipped, lines dropped, doubled or swapped, numbers and names replaced
-// by extreme or wrong ones — must each be read or rejected with a
-// SceneError; any other exception, a crash or a sanitizer report fails.
+// Mutation test of the scene reader: the shipped scenes and the default
+// scene, mutated at random — bytes deleted, inserted or flipped, lines
+// dropped, doubled or swapped, numbers and names replaced by extreme or wrong
+// ones — must each be read or rejected with a SceneError; any other
+// exception, a crash or a sanitizer report fails.
 // Mutants that read and are small are also solved, which must end in a
 // result or a clean exception, never a crash.
 //

@@ -1,5 +1,5 @@
-// The scene reader (issue 5): what a scene means once read, and every kind
-// of bad input rejected with one message FILE:LINE:COL: what; expected.
+// The scene reader: what a scene means once read, and every kind of bad
+// input rejected with one message FILE:LINE:COL: what; expected.
 #define BOOST_TEST_MODULE scene_reader
 #include <boost/test/unit_test.hpp>
 #include <regex>

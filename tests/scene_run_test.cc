@@ -1,7 +1,7 @@
 // Every shipped scene (scenes/*.toml) runs, and its trajectory equals the
 // C++ API solve of the same problem — hand-written functors, not the
-// effects the scene is made of — to 1e-12 (issue 5, acceptance 2). A scene
-// without a counterpart here fails, so a new scene cannot skip the check.
+// effects the scene is made of — to 1e-12. A scene without a counterpart
+// here fails, so a new scene cannot skip the check.
 #define BOOST_TEST_MODULE scene_run
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -85,8 +85,8 @@ Path Marched(const P& problem, const InitialData& init, const Grid& grid,
   return p;
 }
 
-// The seed 000 problems and Kepler from the compiled registry (their
-// initial data are the scenes' too).
+// The problems of Rothkopf & Nordström 2023 and Kepler from the compiled
+// registry (their initial data are the scenes' too).
 Path Registered(const std::string& name, const scene::Scene& s) {
   const NamedProblem& problem = FindProblem(name);
   const Grid grid{.op = s.method.op,
@@ -105,7 +105,8 @@ Path Registered(const std::string& name, const scene::Scene& s) {
   return p;
 }
 
-// Seed 003's Gaussian well, hand-written: L = ½|ẋ|² + exp(−|x|²/2).
+// The Gaussian well of McLachlan & Offen 2023 (docs/bea.md §5),
+// hand-written: L = ½|ẋ|² + exp(−|x|²/2).
 struct GaussianWell2 {
   static constexpr int kDim = 2;
   template <class T>

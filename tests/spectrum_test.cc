@@ -1,5 +1,5 @@
 // Spectrum analysis of D and D̄ (Rothkopf & Nordström 2023, Figs. 3-4;
-// formulation notes §1.2). Multiplicities are counts through ranks of nested
+// docs/method.md §2). Multiplicities are counts through ranks of nested
 // null spaces, never thresholded eigenvalues.
 #define BOOST_TEST_MODULE spectrum
 #include "core/spectrum.h"
@@ -49,7 +49,7 @@ BOOST_AUTO_TEST_CASE(Sbp21At32_ZeroEigenvalueIsAJordanBlockOfSizeTwo) {
   const double sign = l.dot(pi_mode) > 0 ? 1.0 : -1.0;
   BOOST_TEST((sign * l - pi_mode).cwiseAbs().maxCoeff() <= 64 * 32 * kEps);
   // The eigensolver splits the double zero into a pair of size ~sqrt(eps)|D|
-  // (formulation notes: about 2e-6 against 1/dt = 31).
+  // (measured: about 2e-6 against 1/dt = 31; docs/method.md §2).
   BOOST_TEST(std::abs(s.eigenvalues[0]) < 1e-4 * 31);
   BOOST_TEST(std::abs(s.eigenvalues[2]) > 1e-2);
 }
@@ -86,7 +86,7 @@ std::ostream& operator<<(std::ostream& os, const JordanCase& c) {
 }
 
 const JordanCase kJordanCases[] = {
-    // N = 64: the values of formulation notes §1.2 (2, 4, 4, 6).
+    // N = 64: the values of docs/method.md §2 (2, 4, 4, 6).
     {"sbp21", 64, {1, 2}},
     {"sbp42", 64, {1, 2, 3, 4}},
     {"sbp63", 64, {1, 2, 3, 4}},
@@ -99,9 +99,9 @@ const JordanCase kJordanCases[] = {
     {"sbp42", 32, {1, 2, 3, 4}},
     {"sbp63", 32, {1, 2, 3, 4}},
     {"sbp84", 32, {1, 2, 3, 4, 5, 6}},
-    // Odd N changes the chain: 3, 3, 5, 5 instead of 2, 4, 4, 6 (SBP21 as in
-    // formulation notes §1.2; the others measured here, confirmed by exact
-    // rational ranks).
+    // Odd N changes the chain: 3, 3, 5, 5 instead of 2, 4, 4, 6 (measured
+    // here, confirmed by exact rational ranks; docs/method.md §2 gives the
+    // values at N = 64).
     {"sbp21", 17, {1, 2, 3}},
     {"sbp42", 17, {1, 2, 3}},
     {"sbp63", 17, {1, 2, 3, 4, 5}},

@@ -1,8 +1,7 @@
-// Conservation laws and time symmetry of the stepper family, measured
-// (issue 6, acceptance 2). Round-off bounds are c·n·eps·scale with the step
-// count n and the size of the conserved quantity; each property is shown to
-// discriminate by a method that must violate it (RK4, or implicit midpoint
-// for the NLDNLS energy).
+// Conservation laws and time symmetry of the stepper family, measured.
+// Round-off bounds are c·n·eps·scale with the step count n and the size of
+// the conserved quantity; each property is shown to discriminate by a method
+// that must violate it (RK4, or implicit midpoint for the NLDNLS energy).
 #define BOOST_TEST_MODULE steppers_conservation
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
@@ -93,7 +92,7 @@ BOOST_AUTO_TEST_CASE(Kepler_Rk4LosesAngularMomentumBeyondRoundOff) {
 // NLDNLS (16 sites — the soliton of A = 0.5 is about four sites wide —
 // κ = 1, δt = 0.05, 10⁴ steps to t = 500): the
 // charge Σ|z|² is quadratic, kept by midpoint, Gauss and the discrete
-// gradient; the discrete gradient also keeps H (acceptance 2: ≤ 1e-12
+// gradient; the discrete gradient also keeps H (required: ≤ 1e-12
 // relative). Midpoint does not keep H: its drift is measured and must
 // exceed the discrete gradient's by orders of magnitude.
 BOOST_DATA_TEST_CASE(Nldnls_ChargeKeptWithinOneEMinusTwelveOverTenThousandSteps,

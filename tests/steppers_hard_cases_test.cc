@@ -1,6 +1,6 @@
-// Hard cases stay stable, with asserted bounds (issue 6, acceptance 5):
-// a stiff spring at hω = 10, 10⁴ Kepler periods, Kepler e = 0.9 through its
-// pericentre passages, and the NLDNLS at the seed's large amplitude A = 2.
+// Hard cases stay stable, with asserted bounds: a stiff spring at hω = 10,
+// 10⁴ Kepler periods, Kepler e = 0.9 through its pericentre passages, and the
+// NLDNLS at the large amplitude A = 2 of docs/steppers.md §4.
 #define BOOST_TEST_MODULE steppers_hard_cases
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
@@ -129,9 +129,10 @@ BOOST_DATA_TEST_CASE(KeplerHighEccentricity_StableThroughPericentre,
     BOOST_TEST(r.all <= 1.5 * r.early);
 }
 
-// NLDNLS at the seed's amplitude A = 2 (height 4, |z|² = 16 at the centre):
-// 16 sites, δt = 0.01, t = 20. All three stay bounded (|z_n|² ≤ charge) and
-// keep the charge to 1e-12; the discrete gradient also keeps H.
+// NLDNLS at the large amplitude A = 2 of docs/steppers.md §4 (height 4,
+// |z|² = 16 at the centre): 16 sites, δt = 0.01, t = 20. All three stay
+// bounded (|z_n|² ≤ charge) and keep the charge to 1e-12; the discrete
+// gradient also keeps H.
 BOOST_DATA_TEST_CASE(NldnlsLargeAmplitude_ChargeAndBoundsHeld,
                      bdata::make({"midpoint", "gauss2", "discrete_gradient"}),
                      method) {

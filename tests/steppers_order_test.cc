@@ -1,13 +1,12 @@
-// Fitted orders of the stepper family on two NONLINEAR problems (issue 6,
-// acceptance 1): the pendulum over one period t = 2π against its exact
-// Jacobi-elliptic solution (which reproduces the formulation §2 reference
-// values), and Kepler e = 0.6 over one orbit against Kepler's equation.
+// Fitted orders of the stepper family on two NONLINEAR problems: the
+// pendulum over one period t = 2π against its exact Jacobi-elliptic solution
+// (which reproduces the reference values of docs/steppers.md §5), and Kepler
+// e = 0.6 over one orbit against Kepler's equation.
 // The order is the least-squares log–log slope of the final-time max-norm
 // error over an 8× range of steps, with errors below 1000·eps cut off as
 // round-off, and must lie within ±0.15 of the nominal order. Step ranges are
-// in each method's asymptotic regime (larger steps bend the fit). Also
-// acceptance 3: odeint's velocity_verlet reports order 1; its measured order
-// is 2.
+// in each method's asymptotic regime (larger steps bend the fit). Also:
+// odeint's velocity_verlet reports order 1; its measured order is 2.
 #define BOOST_TEST_MODULE steppers_order
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
@@ -107,8 +106,8 @@ BOOST_DATA_TEST_CASE(Kepler_FittedOrderMatchesNominalWithinPointFifteen,
       c.method << " fitted order " << fit.order << ", nominal " << c.nominal);
 }
 
-// Acceptance 3: odeint's velocity_verlet says order 1 (order_value) but is
-// the Störmer–Verlet scheme, so its measured order is 2. An upper-bound order
+// odeint's velocity_verlet says order 1 (order_value) but is the
+// Störmer–Verlet scheme, so its measured order is 2. An upper-bound order
 // test (error ≤ C h^order) passes with either label; a fitted slope does not.
 BOOST_AUTO_TEST_CASE(OdeintVelocityVerlet_ReportsOrderOneButMeasuresTwo) {
   using Stepper = steppers::odeint_peers::VelocityVerlet<problems::Pendulum>;

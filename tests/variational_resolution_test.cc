@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {
 }
 
 BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
-  // Proves hard case 5 of the marching issue: at Δt·ω = 10 the default march
+  // Proves the stiff hard case of marching: at Δt·ω = 10 the default march
   // solves each window on a grid refined to Δt·ω ≤ half the limit (×20 for
   // SBP42); there a window of 31 requested steps spans 11 periods and
   // deviates from the exact local flow by 17 %, more than its own error

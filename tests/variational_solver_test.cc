@@ -1,5 +1,5 @@
 // The variational IVP solver against Rothkopf & Nordström (2023) and the
-// measured facts of formulation notes §1.5-1.8.
+// measured facts of docs/method.md §5–§7, §10 and §11.
 #define BOOST_TEST_MODULE variational_solver
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
@@ -37,14 +37,15 @@ struct PaperOrder {
   const char* problem;
   const char* op;
   double value;       // fitted order of x_N, paper's Δt = 1/Nt
-  double derivative;  // of (Dx)_N; NaN where the acceptance does not ask
+  double derivative;  // of (Dx)_N; NaN where it is not checked
 };
 std::ostream& operator<<(std::ostream& os, const PaperOrder& p) {
   return os << p.problem << " " << p.op;
 }
 
 const double kNone = std::numeric_limits<double>::quiet_NaN();
-// Paper values (formulation §1.5 table): the acceptance items of issue 3.
+// Paper values (docs/method.md §11, table): the published orders the solver
+// must reproduce.
 const PaperOrder kPaperOrders[] = {
     {"freefall", "sbp21", 2.03, kNone},   {"exponential", "sbp21", 2.03, 1.06},
     {"exponential", "sbp42", 2.95, 1.99}, {"damped", "sbp21", 2.03, 1.01},
@@ -74,12 +75,12 @@ BOOST_AUTO_TEST_CASE(FreeFallSbp21_TrueGridSpacingGivesExactlyTwo) {
 BOOST_AUTO_TEST_CASE(FreeFallSbp42_IsExactToRoundOffUpTo2To20Points) {
   // The parabola is in the exactness space of SBP42: what remains is
   // round-off, which the reduced solve with matrix-free refinement keeps at
-  // the level of eps (formulation §1.8) once D is evaluated on differences
+  // the level of eps (docs/method.md §6) once D is evaluated on differences
   // (exact on constants). Before that change the error grew like eps·Nt,
-  // 1.8e-13 at Nt = 65536; the issue's bound is 1e-13.
+  // 1.8e-13 at Nt = 65536; the required bound is 1e-13.
   const NamedProblem& ff = FindProblem("freefall");
-  // Up to Nt = 2²⁰ (issue 4, hard case 6: one global reduced solve in
-  // double; 217 MB peak RSS, measured in the closing note).
+  // Up to Nt = 2²⁰ (one global reduced solve in double; 217 MB peak RSS,
+  // measured).
   for (long long n : {16, 64, 256, 1024, 4096, 16384, 65536, 1 << 20}) {
     Grid g;
     g.op = "sbp42";
@@ -159,7 +160,7 @@ BOOST_DATA_TEST_CASE(Structure_PathsCoincideAndInitialMultipliersVanish,
 }
 
 BOOST_AUTO_TEST_CASE(DiscreteImpulseIdentities_HoldAtTheCriticalPoint) {
-  // For L = ½μẋ² − V with F = −V′ − ξ D x (formulation §1.8):
+  // For L = ½μẋ² − V with F = −V′ − ξ D x (docs/method.md §7):
   //   −λ3 = μ v0 + Σ_j H_jj F_j,
   //   x_N + λ4/μ = x0 + T v0 + (1/μ) Σ_j H_jj (T − t_j) F_j.
   for (const char* name : {"anharmonic", "damped"}) {
@@ -190,8 +191,8 @@ BOOST_AUTO_TEST_CASE(DiscreteImpulseIdentities_HoldAtTheCriticalPoint) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(CorrectedEndState_ConvergesAtTheOrdersOfSection18) {
-  // formulation §1.8: anharmonic SBP42 −λ3 4.3, x_N + λ4 4.3; SBP21 2.0, 2.1;
+BOOST_AUTO_TEST_CASE(CorrectedEndState_ConvergesAtTheMeasuredOrders) {
+  // docs/method.md §7: anharmonic SBP42 −λ3 4.3, x_N + λ4 4.3; SBP21 2.0, 2.1;
   // damped SBP42 x_N + λ4/μ 4.1.
   const auto a42 = Study("anharmonic", "sbp42");
   BOOST_TEST(std::abs(a42.orders.p_corrected - 4.3) <= 0.2);

@@ -39,14 +39,17 @@ std::vector<EffectType> BuiltIn() {
   t.push_back(Type("spring", "L −= ½ k|x − c|²",
                    {{"k", K::kNonNegative, {1.0}, "stiffness k"},
                     {"centre", K::kVector, {0.0}, "rest point c"}}));
-  t.push_back(Type("quartic", "L −= ¼ κ|x|⁴  (anharmonic, seed 000 eq. 33)",
+  t.push_back(Type("quartic",
+                   "L −= ¼ κ|x|⁴  (anharmonic, Rothkopf & Nordström 2023, "
+                   "eq. 33)",
                    {{"kappa", K::kNonNegative, {1.0}, "strength κ"}}));
   t.push_back(Type("pendulum", "L += s cos x_axis  (ẍ = −(s/m) sin x)",
                    {{"strength", K::kPositive, {1.0}, "s = m g ℓ"},
                     {"axis", K::kAxis, {0.0}, "angle coordinate"}}));
   t.push_back(Type("central", "L += k/|x|  (Kepler attraction)",
                    {{"k", K::kPositive, {1.0}, "strength k"}}));
-  t.push_back(Type("gaussian_well", "L += a exp(−|x|²/2)  (seed 003: ẍ = ∇U)",
+  t.push_back(Type("gaussian_well",
+                   "L += a exp(−|x|²/2)  (McLachlan & Offen 2023: ẍ = ∇U)",
                    {{"amplitude", K::kReal, {1.0}, "depth a"}}));
   t.push_back(
       Type("chain",
@@ -56,12 +59,13 @@ std::vector<EffectType> BuiltIn() {
             {"beta", K::kReal, {0.0}, "quartic bond part β"},
             {"fixed_ends", K::kBool, {1.0}, "bonds to walls at both ends"}}));
   t.push_back(Type("damping",
-                   "Λ = −ξ ẋ₊·x₋  (friction force −ξẋ, seed 000 eq. 40)",
+                   "Λ = −ξ ẋ₊·x₋  (friction force −ξẋ, Rothkopf & "
+                   "Nordström 2023, eq. 40)",
                    {{"xi", K::kNonNegative, {0.1}, "friction coefficient ξ"}}));
   t.back().dissipative = true;
   t.push_back(Type("growth",
-                   "L −= ½ κ|x|², Λ = ẋ₊·x₋  (first order ẋ = κx, seed 000 "
-                   "eqs. 37–38)",
+                   "L −= ½ κ|x|², Λ = ẋ₊·x₋  (first order ẋ = κx, "
+                   "Rothkopf & Nordström 2023, eqs. 37–38)",
                    {{"kappa", K::kReal, {1.0}, "rate κ"}}));
   t.back().dissipative = true;
   t.back().first_order = true;

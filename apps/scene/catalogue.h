@@ -1,5 +1,5 @@
-// The effects a scene may list (issue 5), by name: each with its formula,
-// its parameters (kind, default, meaning) and a builder for the effect
+// The effects a scene may list (README "Effects"), by name: each with its
+// formula, its parameters (kind, default, meaning) and a builder for the effect
 // struct of problems/effects.h. The scene reader checks a scene against this
 // table, `vivp run --help` and the README print it, and a C++ Lagrangian
 // registered in registered.cc joins it as one more effect type.

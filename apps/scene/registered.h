@@ -1,6 +1,6 @@
-// C++ Lagrangians usable from scenes by name (issue 5). A struct written as
-// for SolveIvp (problems/, README "Add a Lagrangian") joins with one line in
-// registered.cc:
+// C++ Lagrangians usable from scenes by name (README "Effects"). A struct
+// written as for SolveIvp (problems/, README "Add a Lagrangian") joins with
+// one line in registered.cc:
 //
 //   Register<problems::Cyclotron>("cyclotron", "charge in a magnetic field",
 //                                 {{"B", &problems::Cyclotron::B}}),

@@ -20,10 +20,11 @@ namespace vivp::scene {
 
 namespace {
 
-// The scene issue's Fig. 14 example: the damped oscillator at late time.
+// Rothkopf & Nordström 2023, Fig. 14: the damped oscillator at late time
+// (the scene of scenes/fig14_damped_late.toml).
 constexpr std::string_view kDefaultScene =
-    R"toml(# vivp's default scene: seed 000, Fig. 14
-title = "Damped oscillator at late time (seed 000, Fig. 14)"
+    R"toml(# vivp's default scene: Rothkopf & Nordström 2023, Fig. 14
+title = "Damped oscillator at late time (Rothkopf & Nordström 2023, Fig. 14)"
 
 [system]
 dof = 1

@@ -1,7 +1,7 @@
 // A scene: a physical system stated as a sum of named effects, its initial
-// data, the time span, the method and what to output (issue 5). Read from
-// TOML (toml++); every value is checked here, so a scene that reads without
-// an error can be solved. Bad input throws SceneError whose message is
+// data, the time span, the method and what to output (README "Scenes").
+// Read from TOML (toml++); every value is checked here, so a scene that reads
+// without an error can be solved. Bad input throws SceneError whose message is
 //   FILE:LINE:COL: what is wrong; what is expected
 //
 //   title = "Damped oscillator"            # optional
@@ -90,8 +90,8 @@ Scene ParseScene(std::string_view text, const std::string& source);
 // Reads FILE and parses it; an unreadable file is a SceneError too.
 Scene ReadScene(const std::filesystem::path& file);
 
-// The embedded default scene: the late-time damped oscillator of seed 000,
-// Fig. 14 (what `vivp run` without a scene runs).
+// The embedded default scene: the late-time damped oscillator of Rothkopf &
+// Nordström 2023, Fig. 14 (what `vivp run` without a scene runs).
 std::string_view DefaultSceneText();
 
 // The scene as parsed, defaults filled in (for summary.json).

@@ -5,7 +5,8 @@
 //
 // With (g_x, g_v) = ∂f/∂(x₋, v₋) at x₋ = 0 and G = ∂(g_x, g_v)/∂(x₊, v₊)
 // (DiagonalDerivatives), the Euler–Lagrange equation ∂f/∂x₋ − d/dt ∂f/∂v₋ = 0
-// of the doubled action (Galley's form, seed 000 eq. 34) reads
+// of the doubled action (Galley's form, Rothkopf & Nordström 2023, eq. 34)
+// reads
 //   g_x − G_vx ẋ − G_vv ẍ = 0.
 // Second order (G_vv = ∂²L/∂v² invertible): ẍ = G_vv⁻¹(g_x − G_vx ẋ).
 // First order (L linear in v): g_x(x, ẋ) − G_vx ẋ = 0 is solved for ẋ.
@@ -41,8 +42,9 @@ StateVector<P> Acceleration(const P& problem, const double* x,
 
 // ẋ at x of a first-order problem: Newton on F(ẋ) = g_x − G_vx ẋ from
 // `guess`, with Jacobian ∂g_x/∂v₊ − G_vx (exact when L and Λ are linear in
-// the velocity, as for every first-order system of seed 000). Throws
-// std::runtime_error when F has no zero there (the equation is singular).
+// the velocity, as for every first-order system of Rothkopf & Nordström
+// 2023). Throws std::runtime_error when F has no zero there (the equation is
+// singular).
 template <class P>
 StateVector<P> FirstOrderVelocity(const P& problem, const double* x,
                                   StateVector<P> guess) {

@@ -1,5 +1,5 @@
 // The full doubled discrete action of Rothkopf & Nordström (2023), eqs. 24,
-// 33, 39, 43 in generic form (formulation §1.4):
+// 33, 39, 43 in generic form (docs/method.md §4):
 //
 //   S = Σ_i H_ii f(x1_i, v1_i, x2_i, v2_i)
 //       + λ1·(x1_0 − x_i) + λ2·((Dx1)_0 − ẋ_i)

@@ -3,7 +3,7 @@
 // At node i the density sees x_i and v_i = (D̄x̄)_i. Both are linear in the
 // path: x_i has weight 1 on node i, v_i has the weights of row i of D̄ (row 0
 // includes the SAT penalty −sigma0/H_00). The chain rule of the action's
-// gradient and Hessian runs over exactly these few nodes (formulation §1.4:
+// gradient and Hessian runs over exactly these few nodes (docs/method.md §4:
 // ∇S = H ∂_xL + D̄ᵀ H ∂_vL per path).
 #pragma once
 

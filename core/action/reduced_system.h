@@ -1,20 +1,20 @@
-// The reduced critical-point equations of the doubled action (formulation
-// §1.8): in x₊ = (x1 + x2)/2, x₋ = x1 − x2 the solution has x₋ = λ1 = λ2 = 0
-// exactly, and what remains are the discrete Euler–Lagrange equations
-// ∂S/∂x₋ = 0 at x₋ = 0 (obtained by differentiating S, never written by hand)
-// plus the initial-data constraints.
+// The reduced critical-point equations of the doubled action
+// (docs/method.md §5): in x₊ = (x1 + x2)/2, x₋ = x1 − x2 the solution has
+// x₋ = λ1 = λ2 = 0 exactly, and what remains are the discrete Euler–Lagrange
+// equations ∂S/∂x₋ = 0 at x₋ = 0 (obtained by differentiating S, never
+// written by hand) plus the initial-data constraints.
 //
 // Unknowns y = (x₊ node-major: y[i*d + c], then λ3 (d), then λ4 (d)).
 // Rows: initial position (d), initial velocity (d, second order only), then
 // ∂S/∂x₋ at every node. λ4 and the velocity row are absent for first-order
-// systems (multipliers λ1, λ3 only, formulation §1.4).
+// systems (multipliers λ1, λ3 only, docs/method.md §4).
 //
 //   ∂S/∂x₋_j = H_j ∂f_j/∂x₋ + (D̄ᵀ H ∂f/∂v₋)_j + λ3 δ_{j,N-1} + λ4 D_{N-1,j}
 //
 // with f the density in ± variables (density.h). The residual is evaluated
 // matrix-free (apply D̄, weight with H, apply D̄ᵀ): an assembled DᵀHD has row
 // sums that are not exactly zero, a spurious constant force that the Nt³
-// conditioning amplifies (formulation §1.8).
+// conditioning amplifies (docs/method.md §6).
 #pragma once
 
 #include <array>

@@ -95,7 +95,7 @@ class Operator {
   // variation of u instead of |u|/dt, and D·1 = 0 holds exactly in floating
   // point although the rounded coefficients need not sum to zero. At
   // Nt = 65536 this is what keeps free fall at |x_N − 0.8| ~ 1e-15
-  // (formulation §1.8: the spurious constant force).
+  // (docs/method.md §6: the spurious constant force).
   template <class T>
   T ApplyRow(int i, const T* u) const {
     const Row rw = row(i);

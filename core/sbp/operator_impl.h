@@ -88,7 +88,7 @@ void Operator<Real>::ApplyTranspose(std::span<const T> u,
   // A scatter of the columns of D would sum terms of size |u|/dt that cancel
   // to the result; this form reuses the difference evaluation of D (ApplyRow)
   // and so inherits its exact annihilation of constants: DᵀHD·1 = 0 exactly,
-  // which an assembled DᵀHD does not give (formulation §1.8).
+  // which an assembled DᵀHD does not give (docs/method.md §6).
   std::vector<T> g(u.size());
   for (int i = 0; i < n_; ++i) g[i] = Scaled(Real(1) / NormWeight(i), u[i]);
   Apply(std::span<const T>(g), out);

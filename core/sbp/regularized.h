@@ -6,8 +6,8 @@
 // so only row 0 changes:
 //   (D̄ x̄)_0 = (D x)_0 - sigma0 (x_0 - x_i) / H_00,
 // with x_i the initial value and H_00 the first norm weight (dt/2 for SBP21).
-// sigma0 = -1 is the only value that reproduces the paper (formulation notes
-// §1.3); the printed top-left entry of eq. (29) is a typo, the correct one is
+// sigma0 = -1 is the only value that reproduces the paper (docs/method.md §3);
+// the printed top-left entry of eq. (29) is a typo, the correct one is
 // -1/dt - 2 sigma0/dt = +1/dt for SBP21.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Conservation of modified quantities along computed trajectories (seed 003,
-// Figs. 1-2, and the step-size sweeps of issue 7).
+// Conservation of modified quantities along computed trajectories (McLachlan
+// & Offen 2023, Figs. 1-2, and the step-size sweeps of docs/bea.md §5).
 //
 // The method is run from x(0), x'(0), taken as initial data of the modified
 // equation; at every step where the central difference is defined, x'_n is

@@ -1,7 +1,8 @@
-// Blended backward error analysis (seed 003, Sections 3 and 5): from a
-// method's discrete Lagrangian to the modified equation, the modified
-// Hamiltonian and symplectic form on the 1-jet (x, x'), Noether charges and,
-// where it exists, a first-order modified Lagrangian.
+// Blended backward error analysis (McLachlan & Offen 2023, Sections 3 and 5;
+// docs/bea.md §3): from a method's discrete Lagrangian to the modified
+// equation, the modified Hamiltonian and symplectic form on the 1-jet
+// (x, x'), Noether charges and, where it exists, a first-order modified
+// Lagrangian.
 //
 //   auto r = vivp::bea::Derive(vivp::bea::MakeLmm4(ScalarMatrix(alpha, 2)),
 //                              {.order = 4});
@@ -60,7 +61,7 @@ struct SelfCheck {
   int failing_order = -1;
 };
 
-// Highest order Derive accepts for a method (acceptance: bounded time). It
+// Highest order Derive accepts for a method (bounded by run time). It
 // falls with the dimension and with the number of free symbols in the
 // coefficient matrices: measured at h^8 in d = 2, Störmer–Verlet 10 s, lmm4
 // with A = alpha I 48 s, lmm4 with a general symbolic A (a11, a12, a22) more

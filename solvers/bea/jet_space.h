@@ -1,8 +1,9 @@
 // The jet space (x, x', x'', ...) of a curve x(t) in R^d, with a potential
 // whose derivatives are symbols that depend on x implicitly.
 //
-// Conventions of seed 003's code: x'' = grad U(x), L = |x'|^2/2 + U, so U is
-// minus the potential energy (for Stormer-Verlet's W, U = -W).
+// Conventions of McLachlan & Offen 2023 and their code (docs/bea.md §1):
+// x'' = grad U(x), L = |x'|^2/2 + U, so U is minus the potential energy (for
+// Stormer-Verlet's W, U = -W).
 //
 // Two potential models:
 //   kGeneric  U_a = d^a U / dx^a for every multi-index a, with dU_a/dx_i =

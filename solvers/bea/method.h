@@ -2,7 +2,7 @@
 // each one is a discrete Lagrangian (expanded in h by lagrangians.h).
 //
 //   kStormerVerlet  L_h = |x(t+h) - x(t)|^2 / (2h^2) + (U(x(t)) + U(x(t+h)))/2
-//                   (seed 003, Appendix A, with U = -W);
+//                   (McLachlan & Offen 2023, Appendix A, with U = -W);
 //   kMultistep      eq. (2.6): L_h = (1/2h^2) sum_j (x(t+jh) - x(t))^T A_j
 //                   (x(t+jh) - x(t)) + U(x(t)), whose discrete Euler-Lagrange
 //                   equations are the symmetric LMM (2.2)

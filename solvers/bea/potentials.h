@@ -26,7 +26,8 @@ class NumericPotential {
   virtual void Gradient(const double* x, double* g) const = 0;
 };
 
-// Pendulum in seed-003 convention: U(x) = cos x (W = -cos x, x'' = -sin x).
+// Pendulum in the convention of McLachlan & Offen 2023 (docs/bea.md §1):
+// U(x) = cos x (W = -cos x, x'' = -sin x).
 class Pendulum : public NumericPotential {
  public:
   std::string name() const override { return "pendulum"; }
@@ -50,8 +51,8 @@ class Pendulum : public NumericPotential {
   }
 };
 
-// U(x) = exp(-|x|^2/2) (seed 003, Figs. 1-2) in the generic model:
-// d^a U = prod_i (-1)^{a_i} He_{a_i}(x_i) exp(-|x|^2/2), He the
+// U(x) = exp(-|x|^2/2) (McLachlan & Offen 2023, Figs. 1-2) in the generic
+// model: d^a U = prod_i (-1)^{a_i} He_{a_i}(x_i) exp(-|x|^2/2), He the
 // probabilists' Hermite polynomials.
 class Gaussian : public NumericPotential {
  public:

@@ -4,7 +4,7 @@
 // list c[0], c[1], ..., c[N] of polynomial coefficients (of h^0 ... h^N) and
 // products are truncated at N. GiNaC's own series() is not used: at h^10 it
 // needs minutes and gigabytes, while truncated coefficient lists stay
-// polynomial and cheap (issue 7).
+// polynomial and cheap.
 #pragma once
 
 #include <ginac/ginac.h>

@@ -108,7 +108,9 @@ const std::vector<BenchProblem>& BenchProblems() {
         problems::Pendulum{}, 10 * orbit, 64, "exact (Jacobi sn, cn)",
         [=] { return problems::Pendulum{}.Exact(10 * orbit); }));
     r.push_back(MakeBenchProblem(
-        "anharmonic", "anharmonic oscillator H = ½p² + 5q⁴ (seed 000), t = 10",
+        "anharmonic",
+        "anharmonic oscillator H = ½p² + 5q⁴ (Rothkopf & Nordström 2023), "
+        "t = 10",
         AnharmonicHamiltonian{}, 10.0, 64, "exact (Jacobi cn)",
         [] { return AnharmonicHamiltonian{}.ExactState(10.0); }));
     r.push_back(MakeBenchProblem(

@@ -2,7 +2,8 @@
 // time, initial state, reference at t_end and the step count to start the
 // sweeps from:
 //   harmonic, pendulum, anharmonic, kepler (e = 0.6), kepler_e09,
-//   henon_heiles, nldnls (32 sites, A = 0.5), damped (seed 000 eq. 43).
+//   henon_heiles, nldnls (32 sites, A = 0.5), damped (Rothkopf & Nordström
+//   2023, eq. 43).
 // References are exact where a closed form exists (harmonic, pendulum,
 // anharmonic, Kepler); Hénon–Heiles and the NLDNLS use Gauss–Legendre s = 3
 // at a step 4–20× below the finest in the sweeps (stated in `reference`).
@@ -41,8 +42,8 @@ const std::vector<BenchProblem>& BenchProblems();
 // Called by BenchProblems(); idempotent.
 void RegisterVariationalMethods();
 
-// The damped oscillator of seed 000 (not Hamiltonian): the variational
-// solver's four operators only. Part of BenchProblems().
+// The damped oscillator of Rothkopf & Nordström 2023 (not Hamiltonian): the
+// variational solver's four operators only. Part of BenchProblems().
 BenchProblem DampedBenchProblem();
 
 // Throws std::invalid_argument naming the valid problems.

@@ -1,5 +1,5 @@
 // Symmetric composition Φ_h = Φ_{β_s h} ∘ … ∘ Φ_{β_1 h} of a symmetric base
-// method of order p (Hairer–Lubich–Wanner II.4; formulation §2):
+// method of order p (Hairer–Lubich–Wanner II.4; docs/steppers.md §2):
 //   triple jump      β₁ = β₃ = 1/(2 − 2^{1/(p+1)}), β₂ = 1 − 2β₁   (p → p+2)
 //   Suzuki fractal   β₁ = β₂ = β₄ = β₅ = 1/(4 − 4^{1/(p+1)}), β₃ = 1 − 4β₁
 //   order 6          the triple jump applied to the order-4 triple jump

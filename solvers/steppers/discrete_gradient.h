@@ -1,6 +1,6 @@
-// The discrete-gradient method of seed 004 §5.2 for a Hamiltonian written
-// through quadratic invariants, H(y) = Ĥ(ŷ(y)), ŷ_k(y) = ½yᵀA_k y + b_kᵀy +
-// c_k:
+// The discrete-gradient method of LeMesurier 2012, §5.2 (docs/steppers.md §3),
+// for a Hamiltonian written through quadratic invariants, H(y) = Ĥ(ŷ(y)),
+// ŷ_k(y) = ½yᵀA_k y + b_kᵀy + c_k:
 //   (y⁺ − y)/h = J D̃_ŷĤ(ŷ, ŷ⁺) · D̃_y ŷ(y, y⁺)                        (90)
 // D̃_y ŷ is the exact gradient of ŷ at the midpoint ȳ = (y + y⁺)/2 (exact for
 // quadratics: ŷ(y⁺) − ŷ(y) = ∇ŷ(ȳ)·(y⁺ − y)). D̃_ŷĤ is the symmetric

@@ -4,7 +4,7 @@
 // runge_kutta_dopri5 (adaptive; its knob is a tolerance, not a step).
 // The Nyström forms assume H = ½|p|² + V(q) (unit mass, p = q̇), which holds
 // for every separable problem in problems/. Odeint's own order() is recorded
-// next to the measured one: velocity_verlet reports 1 (issue 6, item 3).
+// next to the measured one: velocity_verlet reports 1.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 // Butcher tableaus (A, b, c) for the Runge–Kutta engine. Gauss–Legendre
 // coefficients are from Hairer, Lubich & Wanner, Table II.1.1 and
-// formulation §2 (s = 2: a₁₂ = ¼ − √3/6, c = ½ ∓ √3/6).
+// docs/steppers.md §1 (s = 2: a₁₂ = ¼ − √3/6, c = ½ ∓ √3/6).
 #pragma once
 
 #include <Eigen/Core>

@@ -158,7 +158,8 @@ BenchProblem DampedBenchProblem() {
   BenchProblem b;
   b.name = "damped";
   b.description =
-      "damped oscillator μẍ + ξẋ + κx = 0 (seed 000 eq. 43), t = 204.8";
+      "damped oscillator μẍ + ξẋ + κx = 0 (Rothkopf & Nordström 2023, "
+      "eq. 43), t = 204.8";
   b.reference = "exact";
   b.t_end = 204.8;
   b.first_steps = 256;

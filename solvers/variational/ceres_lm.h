@@ -13,7 +13,7 @@
 //
 // Warning: the normal equations square the condition number (~Nt⁶ here):
 // expect LM to stall near round-off far earlier than the Newton paths
-// (formulation §1.7). A stall is reported as non-convergence.
+// (docs/method.md §5). A stall is reported as non-convergence.
 #pragma once
 
 #include <ceres/ceres.h>

@@ -3,7 +3,7 @@
 //
 // Orders are fitted twice: against Δt = 1/Nt (the convention of Rothkopf &
 // Nordström 2023, which reproduces their numbers) and against the true grid
-// spacing (t_end − t_start)/(Nt − 1) (formulation §1.5).
+// spacing (t_end − t_start)/(Nt − 1) (docs/method.md §10).
 #pragma once
 
 #include <functional>

@@ -55,7 +55,7 @@ struct Status {
   std::string reason;
 };
 
-// The multiplier-corrected end state (formulation §1.8).
+// The multiplier-corrected end state (docs/method.md §7).
 template <class Real>
 struct CorrectedEnd {
   std::vector<Real> position;  // x_N + M⁻¹λ4 (first order: x_N + C⁻¹λ3)

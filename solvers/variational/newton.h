@@ -13,10 +13,10 @@
 // Newton step followed by up to `refinement_steps` further corrections with
 // the same factorization and a freshly evaluated matrix-free residual: for a
 // linear system this is iterative refinement, which removes the round-off the
-// Nt³ conditioning puts into a single solve (formulation §1.7–1.8); for a
+// Nt³ conditioning puts into a single solve (docs/method.md §6); for a
 // nonlinear one it is a cheap simplified-Newton step.
 //
-// Stopping (formulation §1.7: never on an absolute residual):
+// Stopping (docs/method.md §6: never on an absolute residual):
 //   converged   the last correction is at round-off, |δ|∞ <= tol·max(1, |y|∞)
 //               with tol = step_tolerance (default 32 eps); or two refinement
 //               steps contract with ratio θ < ½ and θ/(1−θ)|δ|, the estimated

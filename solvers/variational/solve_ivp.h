@@ -10,7 +10,7 @@
 //
 // Two ways to the critical point, both from automatic differentiation of S:
 //   Path::kReducedNewton (default)  Newton on ∂S/∂x₋ = 0 at x₋ = 0 plus the
-//       initial-data rows (x₊, λ3, λ4; formulation §1.8);
+//       initial-data rows (x₊, λ3, λ4; docs/method.md §5);
 //   Path::kFullNewton  Newton on the full ∇S = 0 (x1, x2, λ1..λ4), for
 //       cross-checking.
 // (Levenberg–Marquardt through Ceres: solvers/variational/ceres_lm.h.)
@@ -52,7 +52,7 @@ inline void CheckFinite(const std::vector<double>& v, const char* what) {
                                   "data must be finite");
 }
 
-// The multiplier-corrected end state (formulation §1.8) from the end node
+// The multiplier-corrected end state (docs/method.md §7) from the end node
 // (x_N, (Dx)_N) and the multipliers: λ3 = −p(T), and x_N + M⁻¹λ4 is the
 // quadrature of the integral form of x, one order better than x_N
 // (first-order systems: x_N + C⁻¹λ3, C the coefficient of ẋ).
