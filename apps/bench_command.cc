@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "apps/command.h"
-#include "solvers/steppers/bench_problems.h"
+#include "studies/bench_problems.h"
 
 namespace vivp::app {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "apps/command.h"
 #include "core/sbp/builder.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 namespace vivp::app {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "apps/command.h"
-#include "apps/scene/scene.h"
+#include "scene/scene.h"
 
 int main(int argc, char** argv) {
   CLI::App app{

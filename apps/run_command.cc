@@ -18,9 +18,9 @@
 #include <thread>
 
 #include "apps/command.h"
-#include "apps/scene/run.h"
-#include "apps/scene/scene.h"
-#include "figures/plot.h"
+#include "scene/run.h"
+#include "scene/scene.h"
+#include "report/plot.h"
 
 namespace vivp::app {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
 #include "core/spectrum.h"
-#include "figures/spectrum_figures.h"
+#include "report/spectrum_figures.h"
 
 namespace vivp::app {
 namespace {

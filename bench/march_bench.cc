@@ -20,7 +20,7 @@
 #include <string>
 
 #include "bench/timing.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 using namespace vivp;
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/steppers/bench_problems.h"
+#include "studies/bench_problems.h"
 
 using namespace vivp::steppers;
 

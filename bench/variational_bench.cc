@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "bench/timing.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 using namespace vivp;
 

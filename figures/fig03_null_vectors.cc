@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "core/sbp/builder.h"
-#include "figures/spectrum_figures.h"
+#include "report/spectrum_figures.h"
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";

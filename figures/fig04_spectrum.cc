@@ -6,7 +6,7 @@
 
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
-#include "figures/spectrum_figures.h"
+#include "report/spectrum_figures.h"
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";

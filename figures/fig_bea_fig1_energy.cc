@@ -6,7 +6,7 @@
 // Usage: fig_bea_fig1_energy [DIR]
 #include <iostream>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 #include "solvers/bea/conservation.h"
 
 using namespace vivp::bea;

@@ -6,7 +6,7 @@
 // 6th-order central differences). Usage: fig_bea_fig2_momentum [DIR]
 #include <iostream>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 #include "solvers/bea/conservation.h"
 
 using namespace vivp::bea;

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 #include "solvers/bea/conservation.h"
 
 using namespace vivp::bea;

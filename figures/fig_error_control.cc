@@ -14,9 +14,9 @@
 #include <iostream>
 #include <limits>
 
-#include "figures/plot.h"
-#include "solvers/steppers/bench_problems.h"
-#include "solvers/variational/registry.h"
+#include "report/plot.h"
+#include "studies/bench_problems.h"
+#include "studies/registry.h"
 
 namespace {
 

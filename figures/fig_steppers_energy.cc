@@ -9,7 +9,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 #include "problems/kepler.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"

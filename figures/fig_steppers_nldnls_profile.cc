@@ -10,7 +10,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 #include "problems/nldnls.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"

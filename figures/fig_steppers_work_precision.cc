@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "figures/plot.h"
-#include "solvers/steppers/bench_problems.h"
+#include "report/plot.h"
+#include "studies/bench_problems.h"
 
 int main(int argc, char** argv) {
   using namespace vivp::steppers;

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "core/fit.h"
-#include "figures/plot.h"
+#include "report/plot.h"
 
 namespace vivp::figures {
 namespace {

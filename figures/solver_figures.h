@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 namespace vivp::figures {
 

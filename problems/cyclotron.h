@@ -1,6 +1,6 @@
 // README "Add a Lagrangian": the struct between the markers is shown there
 // verbatim; tests/example_add_a_lagrangian.cc checks its trajectory against
-// the exact circle, and apps/scene/registered.cc makes it the scene effect
+// the exact circle, and scene/registered.cc makes it the scene effect
 // "cyclotron" with one line.
 #pragma once
 

@@ -23,7 +23,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 using namespace vivp;
 namespace bdata = boost::unit_test::data;

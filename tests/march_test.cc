@@ -10,7 +10,7 @@
 #include "problems/damped_oscillator.h"
 #include "problems/kepler.h"
 #include "solvers/variational/banded_lu.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 using namespace vivp;
 namespace bdata = boost::unit_test::data;

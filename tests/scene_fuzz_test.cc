@@ -17,8 +17,8 @@
 #include <random>
 #include <regex>
 
-#include "apps/scene/run.h"
-#include "apps/scene/scene.h"
+#include "scene/run.h"
+#include "scene/scene.h"
 
 using namespace vivp::scene;
 

@@ -5,8 +5,8 @@
 #include <regex>
 #include <string>
 
-#include "apps/scene/run.h"
-#include "apps/scene/scene.h"
+#include "scene/run.h"
+#include "scene/scene.h"
 
 using namespace vivp::scene;
 

@@ -9,14 +9,14 @@
 #include <functional>
 #include <map>
 
-#include "apps/scene/run.h"
-#include "apps/scene/scene.h"
+#include "scene/run.h"
+#include "scene/scene.h"
 #include "problems/cyclotron.h"
 #include "problems/pendulum.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/stormer_verlet.h"
 #include "solvers/variational/march.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
 
 using namespace vivp;

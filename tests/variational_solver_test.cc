@@ -13,7 +13,7 @@
 #include "problems/free_fall.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
 
 using namespace vivp;

@@ -26,7 +26,7 @@
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 #include "solvers/steppers/odeint_peers.h"
-#include "solvers/steppers/work_point.h"
+#include "studies/work_point.h"
 
 namespace vivp::steppers {
 

@@ -1,8 +1,8 @@
-#include "apps/scene/registered.h"
+#include "scene/registered.h"
 
 #include <utility>
 
-#include "apps/scene/run_impl.h"
+#include "scene/run_impl.h"
 #include "problems/cyclotron.h"
 
 namespace vivp::scene {

@@ -1,4 +1,4 @@
-#include "figures/plot.h"
+#include "report/plot.h"
 
 #include <gnuplot-iostream.h>
 

@@ -1,10 +1,10 @@
-#include "figures/spectrum_figures.h"
+#include "report/spectrum_figures.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "figures/plot.h"
+#include "report/plot.h"
 
 namespace vivp::figures {
 namespace {

@@ -18,7 +18,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
-#include "apps/scene/scene.h"
+#include "scene/scene.h"
 #include "core/action/euler_lagrange.h"
 
 namespace vivp::scene {

@@ -1,4 +1,4 @@
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 
 #include "problems/anharmonic.h"
 #include "problems/coupled_oscillators.h"
@@ -7,7 +7,7 @@
 #include "problems/free_fall.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
-#include "solvers/variational/registry_entry.h"
+#include "studies/registry_entry.h"
 
 namespace vivp {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/scene/catalogue.h"
+#include "scene/catalogue.h"
 
 namespace vivp::scene {
 

@@ -1,4 +1,4 @@
-#include "apps/scene/reference.h"
+#include "scene/reference.h"
 
 #include <algorithm>
 #include <array>

@@ -4,7 +4,7 @@
 
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march.h"
-#include "solvers/variational/registry.h"
+#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp {

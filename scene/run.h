@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/scene/scene.h"
+#include "scene/scene.h"
 
 namespace vivp::scene {
 

@@ -38,7 +38,7 @@
 #include <string_view>
 #include <vector>
 
-#include "apps/scene/catalogue.h"
+#include "scene/catalogue.h"
 #include "solvers/variational/step_control.h"
 
 namespace vivp::scene {

@@ -1,4 +1,4 @@
-#include "apps/scene/scene.h"
+#include "scene/scene.h"
 
 #include <toml++/toml.h>
 
@@ -10,9 +10,9 @@
 #include <set>
 #include <sstream>
 
-#include "apps/scene/reference.h"
-#include "apps/scene/registered.h"
-#include "apps/scene/run.h"
+#include "scene/reference.h"
+#include "scene/registered.h"
+#include "scene/run.h"
 #include "core/sbp/builder.h"
 #include "solvers/steppers/methods.h"
 

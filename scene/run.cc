@@ -1,8 +1,8 @@
-#include "apps/scene/run.h"
+#include "scene/run.h"
 
 #include <utility>
 
-#include "apps/scene/registered.h"
+#include "scene/registered.h"
 #include "problems/composed.h"
 
 namespace vivp::scene {

@@ -1,5 +1,5 @@
 // The named problems of the work–precision comparison (bench_problems.h).
-#include "solvers/steppers/bench_problems.h"
+#include "studies/bench_problems.h"
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "problems/kepler.h"
 #include "problems/nldnls.h"
 #include "problems/pendulum.h"
-#include "solvers/steppers/work_precision.h"
+#include "studies/work_precision.h"
 
 namespace vivp::steppers {
 

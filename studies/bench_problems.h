@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/steppers/work_point.h"
+#include "studies/work_point.h"
 
 namespace vivp::steppers {
 

@@ -1,9 +1,9 @@
-#include "apps/scene/catalogue.h"
+#include "scene/catalogue.h"
 
 #include <stdexcept>
 #include <utility>
 
-#include "apps/scene/registered.h"
+#include "scene/registered.h"
 
 namespace vivp::scene {
 

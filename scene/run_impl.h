@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/scene/reference.h"
-#include "apps/scene/run.h"
+#include "scene/reference.h"
+#include "scene/run.h"
 #include "core/autodiff/pointwise.h"
 #include "problems/composed.h"
 #include "problems/composed_hamiltonian.h"

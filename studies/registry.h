@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/variational/convergence.h"
+#include "studies/convergence.h"
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/march_types.h"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "problems/damped_oscillator.h"
-#include "solvers/steppers/bench_problems.h"
-#include "solvers/variational/registry.h"
+#include "studies/bench_problems.h"
+#include "studies/registry.h"
 
 namespace vivp::steppers {
 
