@@ -10,13 +10,6 @@ using namespace vivp::bea;
 
 namespace {
 
-GiNaC::matrix Rotation() {
-  GiNaC::matrix g(2, 2);
-  g(0, 1) = -1;
-  g(1, 0) = 1;
-  return g;
-}
-
 struct Case {
   const char* label;
   Method method;
@@ -54,7 +47,7 @@ int main() {
     o.order = c.order;
     if (c.radial) {
       o.model = PotentialModel::kRadial;
-      o.symmetry = Rotation();
+      o.symmetry = PlaneRotation();
     }
     double checks = 0;
     const double t = vivp::bench::MedianSeconds(
@@ -71,7 +64,7 @@ int main() {
   DeriveOptions o;
   o.order = 4;
   o.model = PotentialModel::kRadial;
-  o.symmetry = Rotation();
+  o.symmetry = PlaneRotation();
   auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)), o);
   RadialGaussian potential(2);
   ModifiedQuantities q(r, potential);

@@ -7,26 +7,17 @@
 #include <iostream>
 
 #include "report/plot.h"
-#include "solvers/bea/conservation.h"
+#include "studies/bea_experiment.h"
 
 using namespace vivp::bea;
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  DeriveOptions o;
-  o.order = 4;
-  o.model = PotentialModel::kRadial;
-  GiNaC::matrix rotation(2, 2);
-  rotation(0, 1) = -1;
-  rotation(1, 0) = 1;
-  o.symmetry = rotation;
-  const auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)), o);
-  const RadialGaussian potential(2);
-  const ModifiedQuantities q(r, potential);
-  ConservationSetup s;
-  s.x0 = Eigen::Vector2d(1, -1);
-  s.v0 = Eigen::Vector2d(0.1, -0.2);
-  s.t_end = 1500;
+  const vivp::studies::GaussianWellExperiment experiment;
+  const auto& r = experiment.derivation;
+  const auto& q = experiment.quantities;
+  const auto& potential = experiment.potential;
+  const ConservationSetup s = experiment.Setup(1500);
   const double h = 0.15;
   const auto dev = Deviations(r, q, potential, s, h);
 

@@ -13,13 +13,6 @@ namespace utf = boost::unit_test;
 
 namespace {
 
-GiNaC::matrix Rotation() {
-  GiNaC::matrix g(2, 2);
-  g(0, 1) = -1;
-  g(1, 0) = 1;
-  return g;
-}
-
 DeriveOptions Options(int order, PotentialModel model,
                       std::optional<GiNaC::matrix> symmetry = std::nullopt) {
   DeriveOptions o;
@@ -54,7 +47,7 @@ constexpr int kOrder = 6;
 
 BOOST_AUTO_TEST_CASE(StormerVerletDimension2_FourChecks_HoldToH6) {
   auto r = Derive(MakeStormerVerlet(2),
-                  Options(kOrder, PotentialModel::kRadial, Rotation()));
+                  Options(kOrder, PotentialModel::kRadial, PlaneRotation()));
   ExpectAllPass(r, true);
   BOOST_TEST(r.modified_lagrangian.has_value());
 }
@@ -62,7 +55,7 @@ BOOST_AUTO_TEST_CASE(StormerVerletDimension2_FourChecks_HoldToH6) {
 BOOST_AUTO_TEST_CASE(Lmm4ScalarAlphaDimension2_FourChecks_HoldToH6) {
   // Symbolic alpha: the identities hold for every scalar coefficient.
   auto r = Derive(MakeLmm4(ScalarMatrix(alpha, 2)),
-                  Options(kOrder, PotentialModel::kRadial, Rotation()));
+                  Options(kOrder, PotentialModel::kRadial, PlaneRotation()));
   ExpectAllPass(r, true);
   BOOST_TEST(r.modified_lagrangian.has_value());
 }
@@ -79,7 +72,7 @@ BOOST_AUTO_TEST_CASE(Lmm4MatrixDimension2_ThreeChecks_HoldToH6) {
 
 BOOST_AUTO_TEST_CASE(MidpointDimension2_FourChecks_HoldToH6) {
   auto r = Derive(MakeMidpoint(2),
-                  Options(kOrder, PotentialModel::kRadial, Rotation()));
+                  Options(kOrder, PotentialModel::kRadial, PlaneRotation()));
   ExpectAllPass(r, true);
 }
 
@@ -87,7 +80,7 @@ BOOST_AUTO_TEST_CASE(EachSelfCheck_CatchesAResultWrongAtOneOrder) {
   // Required failures: a result made wrong at one order only must fail
   // there, and only the check that covers the wrong part may fail.
   auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)),
-                  Options(4, PotentialModel::kRadial, Rotation()));
+                  Options(4, PotentialModel::kRadial, PlaneRotation()));
   BOOST_REQUIRE(r.charge);
   BOOST_TEST(CheckOddOrdersVanish(r).passed);
   BOOST_TEST(CheckHamiltonianStructure(r).passed);
@@ -133,7 +126,7 @@ BOOST_AUTO_TEST_CASE(ModifiedLagrangian_PerturbedAtH4_IsCaughtAtH4) {
 BOOST_AUTO_TEST_CASE(Lmm4ScalarAlphaDimension2_FourChecks_HoldToH8,
                      *utf::label("slow") * utf::disabled()) {
   auto r = Derive(MakeLmm4(ScalarMatrix(GiNaC::numeric(-1, 5), 2)),
-                  Options(8, PotentialModel::kRadial, Rotation()));
+                  Options(8, PotentialModel::kRadial, PlaneRotation()));
   ExpectAllPass(r, true);
 }
 

@@ -216,19 +216,28 @@ DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
   return g;
 }
 
-// The mass matrix ∂²L/∂v∂v at (x, v).
+// The Hessian of L in (x, v) at (x, v): ∂²L/∂x∂x top left, the mass matrix
+// ∂²L/∂v∂v bottom right.
 template <class Real, class P>
-Eigen::Matrix<Real, P::kDim, P::kDim> MassMatrix(const P& problem,
-                                                 const Real* x, const Real* v) {
+Eigen::Matrix<Real, 2 * P::kDim, 2 * P::kDim> LagrangianHessian(
+    const P& problem, const Real* x, const Real* v) {
   constexpr int d = P::kDim;
   Real z[2 * d];
   for (int c = 0; c < d; ++c) {
     z[c] = x[c];
     z[d + c] = v[c];
   }
-  const auto h = ad::Hessian<Real, 2 * d>(
-      [&](const auto* s) { return problem(s, s + d); }, z);
-  return h.hessian.template bottomRightCorner<d, d>();
+  return ad::Hessian<Real, 2 * d>(
+             [&](const auto* s) { return problem(s, s + d); }, z)
+      .hessian;
+}
+
+// The mass matrix ∂²L/∂v∂v at (x, v).
+template <class Real, class P>
+Eigen::Matrix<Real, P::kDim, P::kDim> MassMatrix(const P& problem,
+                                                 const Real* x, const Real* v) {
+  return LagrangianHessian(problem, x, v)
+      .template bottomRightCorner<P::kDim, P::kDim>();
 }
 
 // ∂²f/∂x₋∂v₊ at (x, v) on the diagonal x1 = x2: the coefficient of ẋ in a

@@ -86,6 +86,13 @@ int MaxOrder(const Method& method) {
   return CoefficientSymbols(method) > 1 ? base - 2 : base;
 }
 
+GiNaC::matrix PlaneRotation() {
+  GiNaC::matrix g(2, 2);
+  g(0, 1) = -1;
+  g(1, 0) = 1;
+  return g;
+}
+
 BeaResult Derive(const Method& method, const DeriveOptions& options) {
   const int N = options.order;
   const int d = method.dim;

@@ -54,6 +54,10 @@ struct DeriveOptions {
   bool throw_on_failed_check = true;
 };
 
+// The generator of rotations in the (x1, x2) plane, [[0, −1], [1, 0]]: as
+// DeriveOptions::symmetry, its Noether charge is the angular momentum.
+GiNaC::matrix PlaneRotation();
+
 struct SelfCheck {
   std::string name;
   bool passed = false;

@@ -16,7 +16,7 @@
 #include <cmath>
 #include <string_view>
 
-#include "core/autodiff/pointwise.h"
+#include "core/action/density.h"
 
 namespace vivp {
 
@@ -33,17 +33,9 @@ inline double StabilityLimit(std::string_view op) {
 template <class P>
 double FastestFrequency(const P& problem, const double* x, const double* v) {
   constexpr int d = P::kDim;
-  double z[2 * d];
-  for (int c = 0; c < d; ++c) {
-    z[c] = x[c];
-    z[d + c] = v[c];
-  }
-  const auto h = ad::Hessian<double, 2 * d>(
-      [&](const auto* s) { return problem(s, s + d); }, z);
-  const Eigen::Matrix<double, d, d> m =
-      h.hessian.template bottomRightCorner<d, d>();
-  const Eigen::Matrix<double, d, d> k =
-      -h.hessian.template topLeftCorner<d, d>();
+  const auto h = action::LagrangianHessian(problem, x, v);
+  const Eigen::Matrix<double, d, d> m = h.template bottomRightCorner<d, d>();
+  const Eigen::Matrix<double, d, d> k = -h.template topLeftCorner<d, d>();
   if (m.cwiseAbs().maxCoeff() == 0.0) return 0.0;
   const Eigen::Matrix<double, d, d> a = m.fullPivLu().solve(k);
   const auto ev = a.eigenvalues();
