@@ -31,17 +31,6 @@ struct HarmonicOscillator {
   }
 
   // No invariants besides H.
-  // (q, p) of the initial data.
-  std::vector<double> Initial() const {
-    std::vector<double> y(q0.begin(), q0.end());
-    y.insert(y.end(), p0.begin(), p0.end());
-    return y;
-  }
-
-  static std::vector<std::string> InvariantNames() { return {}; }
-  std::vector<double> Invariants(const double*, const double*) const {
-    return {};
-  }
 
   // q = q0 cos ωt + (p0/ω) sin ωt, p = −ω q0 sin ωt + p0 cos ωt.
   std::vector<double> Exact(double t) const {

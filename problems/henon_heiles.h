@@ -33,18 +33,6 @@ struct HenonHeiles {
     return T(0.5) * (q[0] * q[0] + q[1] * q[1]) + q[0] * q[0] * q[1] -
            q[1] * q[1] * q[1] / T(3.0);
   }
-
-  // (q, p) of the initial data.
-  std::vector<double> Initial() const {
-    std::vector<double> y(q0.begin(), q0.end());
-    y.insert(y.end(), p0.begin(), p0.end());
-    return y;
-  }
-
-  static std::vector<std::string> InvariantNames() { return {}; }
-  std::vector<double> Invariants(const double*, const double*) const {
-    return {};
-  }
 };
 
 }  // namespace vivp::problems

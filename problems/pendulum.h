@@ -47,18 +47,6 @@ struct Pendulum {
     return T(0.5) * y[0] - cos(y[1]);
   }
 
-  // (q, p) of the initial data.
-  std::vector<double> Initial() const {
-    std::vector<double> y(q0.begin(), q0.end());
-    y.insert(y.end(), p0.begin(), p0.end());
-    return y;
-  }
-
-  static std::vector<std::string> InvariantNames() { return {}; }
-  std::vector<double> Invariants(const double*, const double*) const {
-    return {};
-  }
-
   // Exact solution for q(0) = 0, p(0) = p0 < 2 (libration):
   // q = 2 arcsin(k sn(t, k)), p = 2k cn(t, k), k = p0/2.
   std::vector<double> Exact(double t) const {

@@ -12,6 +12,7 @@
 #include "problems/kepler.h"
 #include "problems/nldnls.h"
 #include "problems/pendulum.h"
+#include "problems/phase_space.h"
 #include "studies/work_precision.h"
 
 namespace vivp::steppers {
@@ -38,10 +39,6 @@ struct AnharmonicHamiltonian : problems::Anharmonic {
     const auto s = Exact(t);
     return {s.x, s.v};
   }
-  static std::vector<std::string> InvariantNames() { return {}; }
-  std::vector<double> Invariants(const double*, const double*) const {
-    return {};
-  }
 };
 
 }  // namespace
@@ -63,13 +60,13 @@ BenchProblem MakeBenchProblem(std::string name, std::string description,
   std::erase_if(b.methods, [&](const std::string& m) {
     return !ExternalMethodApplies(m, name);
   });
-  b.invariant_names = Problem::InvariantNames();
+  b.invariant_names = problems::InvariantNames<Problem>();
   // The reference is computed on first use and kept.
   auto cache = std::make_shared<std::vector<double>>();
   b.measure = [=](const std::string& method, double knob, int repeats) {
     if (cache->empty()) *cache = exact();
-    return Measure(name, problem, method, problem.Initial(), *cache, t_end,
-                   knob, repeats);
+    return Measure(name, problem, method, problems::InitialState(problem),
+                   *cache, t_end, knob, repeats);
   };
   return b;
 }
@@ -82,7 +79,7 @@ std::vector<double> GaussReference(const Problem& problem, double t_end,
   using System = HamiltonianSystem<Problem>;
   const System system(problem);
   RungeKutta<Problem> stepper(system, Gauss3());
-  const auto init = problem.Initial();
+  const auto init = problems::InitialState(problem);
   typename System::Vector y = System::Vector::Map(init.data());
   const RunReport r = Integrate(stepper, y, t_end / n, n);
   if (r.status != Status::kOk)

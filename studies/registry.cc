@@ -7,6 +7,7 @@
 #include "problems/free_fall.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
+#include "problems/phase_space.h"
 #include "studies/registry_entry.h"
 
 namespace vivp {
@@ -45,7 +46,7 @@ const std::vector<NamedProblem>& Registry() {
           {y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
     };
     auto initial = [](const auto& p) {
-      const std::vector<double> y = p.Initial();
+      const std::vector<double> y = problems::InitialState(p);
       const std::size_t d = y.size() / 2;
       return InitialData{{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}};
     };

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "studies/convergence.h"
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/march_types.h"
+#include "studies/convergence.h"
 
 namespace vivp {
 

@@ -4,8 +4,8 @@
 
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march.h"
-#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
+#include "studies/registry.h"
 
 namespace vivp {
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "problems/phase_space.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 #include "solvers/steppers/odeint_peers.h"
@@ -80,13 +81,15 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
   const Vector start = Vector::Map(y0.data());
   const double e0 = system.Energy(start);
   const double e_scale = e0 != 0 ? std::fabs(e0) : 1.0;
-  const auto i0 = problem.Invariants(start.data(), start.data() + System::kDim);
+  const auto i0 = problems::InvariantValues(problem, start.data(),
+                                            start.data() + System::kDim);
   WorkPoint w;
   w.method = method;
   double energy = 0, invariant = 0;
   auto observe = [&](const Vector& y) {
     energy = std::max(energy, std::fabs(system.Energy(y) - e0));
-    const auto i = problem.Invariants(y.data(), y.data() + System::kDim);
+    const auto i =
+        problems::InvariantValues(problem, y.data(), y.data() + System::kDim);
     for (std::size_t k = 0; k < i.size(); ++k)
       invariant = std::max(invariant, std::fabs(i[k] - i0[k]));
   };

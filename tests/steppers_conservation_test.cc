@@ -11,6 +11,7 @@
 
 #include "problems/kepler.h"
 #include "problems/nldnls.h"
+#include "problems/phase_space.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 
@@ -28,7 +29,7 @@ using VectorOf = typename steppers::HamiltonianSystem<Problem>::Vector;
 
 template <class Problem>
 VectorOf<Problem> Initial(const Problem& p) {
-  const auto init = p.Initial();
+  const auto init = vivp::problems::InitialState(p);
   return VectorOf<Problem>::Map(init.data());
 }
 
@@ -47,13 +48,15 @@ Drift MeasureDrift(const Problem& p, const std::string& method, double h,
   auto stepper = steppers::MakeStepper<Problem>(method, system);
   auto y = Initial(p);
   const double e0 = system.Energy(y);
-  const auto i0 = p.Invariants(y.data(), y.data() + Problem::kDim);
+  const auto i0 =
+      vivp::problems::InvariantValues(p, y.data(), y.data() + Problem::kDim);
   Drift d;
   d.invariants.assign(i0.size(), 0.0);
   d.report = steppers::Integrate(
       stepper, y, h, steps, [&](double, const VectorOf<Problem>& x) {
         d.energy = std::max(d.energy, std::fabs(system.Energy(x) - e0));
-        const auto i = p.Invariants(x.data(), x.data() + Problem::kDim);
+        const auto i = vivp::problems::InvariantValues(
+            p, x.data(), x.data() + Problem::kDim);
         for (std::size_t k = 0; k < i.size(); ++k)
           d.invariants[k] = std::max(d.invariants[k], std::fabs(i[k] - i0[k]));
       });

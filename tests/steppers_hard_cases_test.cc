@@ -11,6 +11,7 @@
 #include "problems/harmonic_oscillator.h"
 #include "problems/kepler.h"
 #include "problems/nldnls.h"
+#include "problems/phase_space.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 
@@ -27,7 +28,7 @@ using VectorOf = typename steppers::HamiltonianSystem<Problem>::Vector;
 
 template <class Problem>
 VectorOf<Problem> Initial(const Problem& p) {
-  const auto init = p.Initial();
+  const auto init = vivp::problems::InitialState(p);
   return VectorOf<Problem>::Map(init.data());
 }
 

@@ -17,6 +17,7 @@
 #include "core/fit.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
+#include "problems/phase_space.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 #include "solvers/steppers/odeint_peers.h"
@@ -48,7 +49,7 @@ PowerLawFit MeasureOrder(const Problem& problem, double t_end, int n0,
   std::vector<double> h, error;
   for (int n = n0; n <= 8 * n0; n *= 2) {
     auto stepper = make(system);
-    const auto init = problem.Initial();
+    const auto init = vivp::problems::InitialState(problem);
     typename System::Vector y = System::Vector::Map(init.data());
     const auto report = steppers::Integrate(stepper, y, t_end / n, n);
     BOOST_TEST_REQUIRE((report.status == steppers::Status::kOk));
