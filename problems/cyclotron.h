@@ -1,7 +1,7 @@
 // README "Add a Lagrangian": the struct between the markers is shown there
 // verbatim; tests/example_add_a_lagrangian.cc checks its trajectory against
-// the exact circle, and scene/registered.cc makes it the scene effect
-// "cyclotron" with one line.
+// the exact circle, and lagrangians/cyclotron.cc registers it by name (the
+// problem and scene type "cyclotron").
 #pragma once
 
 namespace vivp::problems {

@@ -78,9 +78,16 @@ double Get(const ParameterValues& v, const std::string& name) {
 
 }  // namespace
 
+const std::vector<EffectType>& BuiltInEffects() {
+  static const std::vector<EffectType> built_in = BuiltIn();
+  return built_in;
+}
+
+// Built once, at first use after static initialization, when every
+// registration is in.
 const std::vector<EffectType>& EffectCatalogue() {
   static const std::vector<EffectType> catalogue = [] {
-    std::vector<EffectType> all = BuiltIn();
+    std::vector<EffectType> all = BuiltInEffects();
     for (const auto& r : RegisteredLagrangians()) all.push_back(r.type);
     return all;
   }();

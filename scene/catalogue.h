@@ -2,7 +2,7 @@
 // formula, its parameters (kind, default, meaning) and a builder for the effect
 // struct of problems/effects.h. The scene reader checks a scene against this
 // table, `vivp run --help` and the README print it, and a C++ Lagrangian
-// registered in registered.cc joins it as one more effect type.
+// registered in lagrangians/ (registered.h) joins it as one more effect type.
 #pragma once
 
 #include <map>
@@ -48,6 +48,8 @@ struct EffectType {
   std::vector<std::string> exclusive;
 };
 
+// The effects vivp ships, without the registered Lagrangians.
+const std::vector<EffectType>& BuiltInEffects();
 const std::vector<EffectType>& EffectCatalogue();
 // nullptr when no effect has that name.
 const EffectType* FindEffectType(const std::string& name);

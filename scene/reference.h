@@ -12,14 +12,15 @@
 #pragma once
 
 #include <Eigen/Dense>
-#include <boost/numeric/odeint.hpp>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
-#include "scene/scene.h"
 #include "core/action/euler_lagrange.h"
+#include "scene/scene.h"
+#include "solvers/variational/ode_reference.h"
 
 namespace vivp::scene {
 
@@ -96,88 +97,29 @@ class LinearReference : public Reference {
   Eigen::VectorXd y0_;
 };
 
+// The Euler–Lagrange reference of solvers/variational/ode_reference.h
+// behind the scene's Reference interface.
 template <class P>
 class OdeReference : public Reference {
  public:
-  static constexpr int d = P::kDim;
-  using Vec = std::vector<double>;
-  static constexpr double kTolerance = 1e-13;
-  static constexpr long kMaxSteps = 10'000'000;
-
   OdeReference(const P& problem, const Scene& s)
-      : problem_(problem),
-        order_(s.order),
-        t_(s.t_start),
-        dt_((s.t_end - s.t_start) / 1024),
-        y_(s.x0),
-        stepper_(boost::numeric::odeint::make_controlled(
-            kTolerance, kTolerance,
-            boost::numeric::odeint::runge_kutta_fehlberg78<Vec>())) {
-    if (order_ == 2) y_.insert(y_.end(), s.v0.begin(), s.v0.end());
-  }
+      : ode_(problem, s.order, s.t_start, s.x0, s.v0, s.t_end - s.t_start) {}
 
   void State(double t, double* x, double* v) override {
-    namespace odeint = boost::numeric::odeint;
-    auto rhs = [this](const std::vector<double>& y, std::vector<double>& dy,
-                      double) { Rhs(y, dy); };
-    int failures = 0;
-    while (t_ < t) {
-      // Land exactly on t; keep the controller's own step size for later.
-      const bool last = t_ + dt_ >= t;
-      double h = last ? t - t_ : dt_;
-      if (stepper_.try_step(rhs, y_, t_, h) == odeint::fail) {
-        dt_ = h;
-        if (++failures > 1000)
-          throw std::runtime_error(
-              "the ode reference cannot keep its error below 1e-13 near t = " +
-              std::to_string(t_));
-        continue;
-      }
-      failures = 0;
-      if (++steps_ > kMaxSteps)
-        throw std::runtime_error(
-            "the ode reference needs more than 10^7 steps to reach t = " +
-            std::to_string(t) +
-            " at tolerance 1e-13 (a stiff or fast system); use reference = "
-            "\"none\" or a shorter time span");
-      if (last)
-        t_ = t;  // exactly, whatever round-off the step added
-      else
-        dt_ = h;
-    }
-    for (int c = 0; c < d; ++c) x[c] = y_[c];
-    if (order_ == 2) {
-      for (int c = 0; c < d; ++c) v[c] = y_[d + c];
-    } else {
-      const auto vel = action::FirstOrderVelocity(
-          problem_, y_.data(), Eigen::Matrix<double, d, 1>::Zero());
-      for (int c = 0; c < d; ++c) v[c] = vel[c];
+    try {
+      ode_.State(t, x, v);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string(e.what()) +
+                               ", or reference = \"none\"");
     }
   }
 
   std::string description() const override {
-    return "ode: Euler–Lagrange equations by automatic differentiation, "
-           "Runge–Kutta–Fehlberg 7(8) (Boost.Odeint) at tolerance 1e-13";
+    return vivp::OdeReference<P>::Description();
   }
 
  private:
-  void Rhs(const std::vector<double>& y, std::vector<double>& dy) const {
-    // A first-order state holds x only; the equations take (x, ẋ).
-    double full[2 * d] = {}, rate[2 * d];
-    std::copy(y.begin(), y.end(), full);
-    action::EquationsOfMotion(problem_, order_, full, rate, velocity_);
-    dy.assign(rate, rate + y.size());
-  }
-
-  const P& problem_;
-  int order_;
-  double t_, dt_;
-  long steps_ = 0;
-  std::vector<double> y_;
-  mutable action::StateVector<P> velocity_ = action::StateVector<P>::Zero();
-  boost::numeric::odeint::controlled_runge_kutta<
-      boost::numeric::odeint::runge_kutta_fehlberg78<Vec>>
-      stepper_;
+  vivp::OdeReference<P> ode_;
 };
 
 }  // namespace detail

@@ -1,13 +1,7 @@
-// C++ Lagrangians usable from scenes by name (README "Effects"). A struct
-// written as for SolveIvp (problems/, README "Add a Lagrangian") joins with
-// one line in registered.cc:
-//
-//   Register<problems::Cyclotron>("cyclotron", "charge in a magnetic field",
-//                                 {{"B", &problems::Cyclotron::B}}),
-//
-// after which `type = "cyclotron"` (with its listed parameters) is an effect
-// of its own, alone or summed with the built-in effects. Registration
-// instantiates the scene runner for the struct, once, in registered.cc.
+// C++ Lagrangians usable from scenes by name (README "Effects"): a struct
+// written as for SolveIvp and registered in its own file in lagrangians/
+// (lagrangians/register.h) is a scene type of its own, alone or summed with
+// the built-in effects, with the members it lists as parameters.
 #pragma once
 
 #include <functional>
@@ -28,6 +22,11 @@ struct RegisteredLagrangian {
   std::function<RunOutcome(const Scene&, RunSink&)> run;
 };
 
+// Adds a registration (scene/register_lagrangian.h makes one). Throws
+// std::logic_error if the name is taken, by a built-in effect or another
+// registration.
+void AddRegistered(RegisteredLagrangian r);
+// Every registration, in the order of their names.
 const std::vector<RegisteredLagrangian>& RegisteredLagrangians();
 const RegisteredLagrangian* FindRegistered(const std::string& name);
 int RegisteredOrder(const EffectType& type);

@@ -3,17 +3,15 @@
 #pragma once
 
 #include <chrono>
-#include <iomanip>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "scene/reference.h"
-#include "scene/run.h"
 #include "core/autodiff/pointwise.h"
 #include "problems/composed.h"
 #include "problems/composed_hamiltonian.h"
+#include "scene/reference.h"
+#include "scene/run.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 #include "solvers/variational/ceres_lm.h"
@@ -189,64 +187,61 @@ inline Path SolverPath(const std::string& name) {
   return Path::kReducedNewton;
 }
 
+// One global solve of the whole span: the nodes go to `emit` afterwards.
 template <class P>
-RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
+void SolveGlobal(const P& problem, const Scene& s, const InitialData& initial,
+                 const Grid& grid, NodeEmitter<P>& emit, RunOutcome& out) {
   constexpr int d = P::kDim;
-  const Grid grid{.op = s.method.op,
-                  .points = s.points,
-                  .t_start = s.t_start,
-                  .t_end = s.t_end};
-  const InitialData initial{s.x0, s.v0};
-  NodeEmitter<P> emit(problem, s, sink);
-  RunOutcome out;
-  out.method = "variational, " + s.method.op + ", " + s.method.solver;
   nlohmann::json& j = out.solver;
-  j["reference"] = emit.reference_description();
   const auto start = Clock::now();
-  if (s.method.slab_points == 0) {
-    SolveOptions options;
-    options.path = SolverPath(s.method.solver);
-    const IvpSolution<double> sol =
-        options.path == Path::kCeresLm
-            ? SolveIvpCeres(problem, initial, grid, options)
-            : SolveIvp(problem, initial, grid, options);
-    out.seconds = Since(start);
-    out.converged = sol.status.converged;
-    out.status = sol.status.converged ? "converged" : sol.status.reason;
-    j["iterations"] = sol.iterations;
-    j["gradient_norm"] = sol.gradient_norm;
-    j["residual_norm"] = sol.residual_norm;
-    j["max_path_difference"] = sol.max_path_difference;
-    j["end_position_error_estimate"] = sol.corrected.position_error_estimate;
-    j["end_velocity_error_estimate"] = sol.corrected.velocity_error_estimate;
-    out.end_x = sol.corrected.position;
-    out.end_v =
-        s.order == 2 ? sol.corrected.velocity : std::vector<double>(d, 0.0);
-    out.points = sol.points();
-    for (int i = 0; i < sol.points(); ++i) {
-      double x[d], v[d];
-      for (int c = 0; c < d; ++c) {
-        x[c] = sol.x1(i, c);
-        v[c] = sol.velocity(i, c);
-      }
-      emit.Node(i, sol.t[i], x, v);
+  SolveOptions options;
+  options.path = SolverPath(s.method.solver);
+  const IvpSolution<double> sol =
+      options.path == Path::kCeresLm
+          ? SolveIvpCeres(problem, initial, grid, options)
+          : SolveIvp(problem, initial, grid, options);
+  out.seconds = Since(start);
+  out.converged = sol.status.converged;
+  out.status = sol.status.converged ? "converged" : sol.status.reason;
+  j["iterations"] = sol.iterations;
+  j["gradient_norm"] = sol.gradient_norm;
+  j["residual_norm"] = sol.residual_norm;
+  j["max_path_difference"] = sol.max_path_difference;
+  j["end_position_error_estimate"] = sol.corrected.position_error_estimate;
+  j["end_velocity_error_estimate"] = sol.corrected.velocity_error_estimate;
+  out.end_x = sol.corrected.position;
+  out.end_v =
+      s.order == 2 ? sol.corrected.velocity : std::vector<double>(d, 0.0);
+  out.points = sol.points();
+  for (int i = 0; i < sol.points(); ++i) {
+    double x[d], v[d];
+    for (int c = 0; c < d; ++c) {
+      x[c] = sol.x1(i, c);
+      v[c] = sol.velocity(i, c);
     }
-    return out;
+    emit.Node(i, sol.t[i], x, v);
   }
-  out.method += ", marched in windows of " +
-                std::to_string(s.method.slab_points) + " points";
-  MarchOptions options;
-  options.window_points = s.method.slab_points;
-  options.keep_trajectory = false;
-  options.solve.path = SolverPath(s.method.solver);
-  options.tolerance = s.method.tolerance;
-  if (options.tolerance.enabled()) {
-    std::ostringstream tol;
-    tol << std::setprecision(3) << ", error control to "
-        << options.tolerance.absolute << " + " << options.tolerance.relative
-        << "·|value|";
-    out.method += tol.str();
-  }
+}
+
+// The march's options from [method]: windows of slab_points, and the error
+// control of its tolerance when there is one (run_variational.cc).
+MarchOptions MarchOptionsFor(const Scene& s);
+// ", marched in windows of N points" and the error control, if any, for the
+// outcome's method.
+std::string MarchDescription(const Scene& s, const MarchOptions& options);
+// The march's status, counts and end state in the outcome (the time is the
+// caller's: it excludes the output).
+void RecordMarch(const MarchResult& r, const MarchOptions& options,
+                 RunOutcome& out);
+
+// A march in windows: each node goes to `emit` as it is accepted.
+template <class P>
+void SolveMarched(const P& problem, const Scene& s, const InitialData& initial,
+                  const Grid& grid, NodeEmitter<P>& emit, RunSink& sink,
+                  RunOutcome& out) {
+  const auto start = Clock::now();
+  const MarchOptions options = MarchOptionsFor(s);
+  out.method += MarchDescription(s, options);
   long long index = 0;
   double output_seconds = 0;
   const double span = s.t_end - s.t_start;
@@ -259,32 +254,24 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
                  output_seconds += Since(t0);
                });
   out.seconds = Since(start) - output_seconds;
-  out.converged = r.status.converged;
-  out.status = r.status.converged ? "converged" : r.status.reason;
-  if (r.status.converged && !r.status.reason.empty())
-    out.status += " (" + r.status.reason + ")";
-  j["windows"] = r.window_count;
-  j["fallbacks"] = r.fallbacks;
-  j["check_failures"] = r.check_failures;
-  j["refinement"] = r.refinement;
-  j["factorizations"] = r.iterations;
-  j["corrections"] = r.corrections;
-  j["error_estimate"] = r.error_estimate;
-  j["predictor_steps"] = r.predictor_steps;
-  if (options.tolerance.enabled()) {
-    j["tolerance"] = {{"absolute", options.tolerance.absolute},
-                      {"relative", options.tolerance.relative}};
-    j["rejected"] = r.rejected;
-    j["min_step"] = r.min_step;
-    j["max_step"] = r.max_step;
-  }
-  if (!r.status.converged) {
-    j["failed_at"] = r.failed_at;
-    j["last_residual"] = r.last_residual;
-  }
-  out.end_x = r.end_position;
-  out.end_v = r.end_velocity;
-  out.points = r.points;
+  RecordMarch(r, options, out);
+}
+
+template <class P>
+RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
+  const Grid grid{.op = s.method.op,
+                  .points = s.points,
+                  .t_start = s.t_start,
+                  .t_end = s.t_end};
+  const InitialData initial{s.x0, s.v0};
+  NodeEmitter<P> emit(problem, s, sink);
+  RunOutcome out;
+  out.method = "variational, " + s.method.op + ", " + s.method.solver;
+  out.solver["reference"] = emit.reference_description();
+  if (s.method.slab_points == 0)
+    SolveGlobal(problem, s, initial, grid, emit, out);
+  else
+    SolveMarched(problem, s, initial, grid, emit, sink, out);
   return out;
 }
 

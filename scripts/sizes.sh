@@ -15,7 +15,8 @@ report=80
 [[ ${1:-} == --all ]] && report=40
 
 status=0
-files=$(git ls-files 'core/*' 'problems/*' 'solvers/*' 'studies/*' \
+files=$(git ls-files --cached --others --exclude-standard \
+          'core/*' 'problems/*' 'solvers/*' 'studies/*' 'lagrangians/*' \
           'scene/*' 'report/*' 'apps/*' 'figures/*' 'bench/*' 'tests/*' \
           'examples/*' | grep -E '\.(h|cc|in)$' |
         grep -vE '^core/sbp/[a-z_]*(19|20)[0-9]{2}\.h$')

@@ -23,7 +23,9 @@ struct ConvergenceRow {
   double err_x = 0;    // |x_N − x(T)|∞
   double err_v = 0;  // |(Dx)_N − ẋ(T)|∞ (first order: |(Dx)_N − ẋ(T)| too)
   double err_x_corrected = 0;  // |x_N + M⁻¹λ4 − x(T)|∞
-  double err_p_corrected = 0;  // |−λ3 − p(T)|∞ (NaN for first order;
+  double err_p_corrected = 0;  // |p_N − p(T)|∞, p_N = −λ3 moved to the
+                               // corrected position (docs/method.md §7;
+                               // NaN for first order;
                                // marching: error of the handed-off velocity)
   double error_estimate = 0;   // |M⁻¹λ4|∞, the built-in estimate of err_x
   int iterations = 0;

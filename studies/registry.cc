@@ -1,74 +1,34 @@
 #include "studies/registry.h"
 
-#include "problems/anharmonic.h"
-#include "problems/coupled_oscillators.h"
-#include "problems/damped_oscillator.h"
-#include "problems/exponential.h"
-#include "problems/free_fall.h"
-#include "problems/kepler.h"
-#include "problems/pendulum.h"
-#include "problems/phase_space.h"
-#include "studies/registry_entry.h"
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace vivp {
 
-const std::vector<NamedProblem>& Registry() {
-  static const std::vector<NamedProblem> problems = [] {
-    using namespace problems;
-    std::vector<NamedProblem> r;
-    r.push_back(detail::Entry("freefall", "free fall, L = ½ẋ² − x (eq. 24)",
-                              FreeFall{}, {{1.0}, {0.3}},
-                              detail::Scalar<FreeFall>));
-    r.push_back(detail::Entry(
-        "anharmonic", "anharmonic oscillator, L = ½ẋ² − 5x⁴ (eq. 33)",
-        Anharmonic{}, {{1.0}, {0.3}}, detail::Scalar<Anharmonic>));
-    r.push_back(detail::Entry(
-        "exponential", "first order ẋ = 5x/2, L = −5x²/4, Λ = ẋ₊x₋ (eq. 39)",
-        Exponential{}, {{1.0}, {}}, [](const Exponential& p, double t) {
-          const auto e = p.Exact(t);
-          return ExactState{{e.x}, {e.v}, {}};
-        }));
-    r.push_back(detail::Entry(
-        "damped", "damped oscillator μ = 0.5, κ = 1, ξ = 0.00071 (eq. 43)",
-        DampedOscillator{}, {{1.0}, {0.0}}, detail::Scalar<DampedOscillator>));
-    r.push_back(detail::Entry(
-        "coupled", "two coupled oscillators (d = 2, normal modes exact)",
-        CoupledOscillators{}, {{1.0, 0.0}, {0.0, 0.3}},
-        [](const CoupledOscillators& p, double t) {
-          const auto s = p.Exact(t);
-          return ExactState{{s.x[0], s.x[1]}, {s.v[0], s.v[1]}, {}};
-        }));
-    // Canonical systems with L = ½|ẋ|² − V: the momentum is the velocity.
-    auto canonical = [](const auto& p, double t) {
-      const std::vector<double> y = p.Exact(t);
-      const std::size_t d = y.size() / 2;
-      return ExactState{
-          {y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
-    };
-    auto initial = [](const auto& p) {
-      const std::vector<double> y = problems::InitialState(p);
-      const std::size_t d = y.size() / 2;
-      return InitialData{{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}};
-    };
-    r.push_back(detail::Entry("pendulum",
-                              "pendulum, L = ½ẋ² + cos x, x(0) = 0, ẋ(0) = 1",
-                              Pendulum{}, initial(Pendulum{}), canonical));
-    r.push_back(detail::Entry(
-        "kepler", "planar Kepler e = 0.6 from pericentre (d = 2, period 2π)",
-        Kepler{}, initial(Kepler{}), canonical));
-    // The hard case of error control: r from 0.1 to 1.9, the local time
-    // scale r^{3/2} varies by a factor of 83 over an orbit.
-    Kepler eccentric;
-    eccentric.e = 0.9;
-    r.push_back(detail::Entry(
-        "kepler_e09",
-        "planar Kepler e = 0.9 from pericentre, x(0) = (0.1, 0), ẋ(0) = (0, "
-        "√19) (d = 2, period 2π)",
-        eccentric, {{0.1, 0.0}, {0.0, std::sqrt(19.0)}}, canonical));
-    return r;
-  }();
+namespace {
+
+// Function-local, so that registrations in any translation unit find it
+// constructed whatever the order of static initialization.
+std::vector<NamedProblem>& Problems() {
+  static std::vector<NamedProblem> problems;
   return problems;
 }
+
+}  // namespace
+
+void AddProblem(NamedProblem problem) {
+  auto& all = Problems();
+  const auto at = std::lower_bound(
+      all.begin(), all.end(), problem.name,
+      [](const NamedProblem& p, const std::string& n) { return p.name < n; });
+  if (at != all.end() && at->name == problem.name)
+    throw std::logic_error("two problems registered as '" + problem.name + "'");
+  all.insert(at, std::move(problem));
+}
+
+const std::vector<NamedProblem>& Registry() { return Problems(); }
 
 std::string ProblemNameList() {
   std::string out;

@@ -1,10 +1,10 @@
 // The problems the variational solver knows by name (for `vivp converge`,
-// tests and figures), each with its initial data and exact solution.
+// tests and figures), each with its initial data and its exact solution or
+// a reference computed from its Lagrangian.
 //
-// Adding a problem with an exact solution is one entry in registry.cc: a
-// problem struct from problems/ plus a function returning its exact state.
-// The solver templates are instantiated there, once, not in every user of
-// this header.
+// A problem joins with one registration statement in the file that defines
+// it (lagrangians/register.h); the solver templates are instantiated there,
+// once, not in every user of this header.
 #pragma once
 
 #include <functional>
@@ -31,9 +31,17 @@ struct NamedProblem {
   std::function<MarchResult(const Grid&, const MarchOptions&,
                             const NodeObserver&)>
       march;
+  // The closed form, or the reference trajectory computed when there is
+  // none; `reference` says which.
   std::function<ExactState(double t)> exact;
+  std::string reference;
 };
 
+// Adds a problem under its name (lagrangians/register.h does, during static
+// initialization). Throws std::logic_error if the name is taken.
+void AddProblem(NamedProblem problem);
+
+// Every problem added, in the order of their names.
 const std::vector<NamedProblem>& Registry();
 std::string ProblemNameList();
 // Throws std::invalid_argument naming the valid problems.

@@ -1,9 +1,14 @@
 // How a problem joins the registry (registry.h): the solver templates for
-// one problem struct, wrapped in type-erased functions.
+// one problem struct, wrapped in type-erased functions, with its closed form
+// or, without one, a reference computed from its Lagrangian.
 #pragma once
 
+#include <memory>
+
+#include "problems/phase_space.h"
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march.h"
+#include "solvers/variational/ode_reference.h"
 #include "solvers/variational/solve_ivp.h"
 #include "studies/registry.h"
 
@@ -13,11 +18,13 @@ namespace detail {
 
 template <class P, class ExactFn>
 NamedProblem Entry(std::string name, std::string description, P problem,
-                   InitialData initial, ExactFn exact_fn) {
+                   InitialData initial, ExactFn exact_fn,
+                   std::string reference = "exact") {
   NamedProblem e;
   e.name = std::move(name);
   e.description = std::move(description);
   e.initial = initial;
+  e.reference = std::move(reference);
   e.solve = [problem, initial](const Grid& g, const SolveOptions& o) {
     if (o.path == Path::kCeresLm) return SolveIvpCeres(problem, initial, g, o);
     return SolveIvp(problem, initial, g, o);
@@ -29,23 +36,73 @@ NamedProblem Entry(std::string name, std::string description, P problem,
   e.exact = [problem, exact_fn](double t) {
     ExactState s = exact_fn(problem, t);
     if (!s.v.empty()) {
-      const auto m =
-          action::MassMatrix<double>(problem, s.x.data(), s.v.data());
-      for (int r = 0; r < P::kDim; ++r) {
-        double p = 0;
-        for (int c = 0; c < P::kDim; ++c) p += m(r, c) * s.v[c];
-        s.p.push_back(p);
+      // The canonical momentum ∂L/∂ẋ (with a vector potential it is not
+      // M ẋ), the quantity −λ3 approximates (docs/method.md §7).
+      constexpr int d = P::kDim;
+      double z[2 * d];
+      for (int c = 0; c < d; ++c) {
+        z[c] = s.x[c];
+        z[d + c] = s.v[c];
       }
+      const auto g = ad::Gradient<double, 2 * d>(
+          [&](const auto* y) { return problem(y, y + d); }, z);
+      for (int c = 0; c < d; ++c) s.p.push_back(g.second[d + c]);
     }
     return s;
   };
   return e;
 }
 
+// A problem without a closed form: the Euler–Lagrange equations of its
+// Lagrangian integrated from its initial data at t = 0 to t
+// (ode_reference.h), one integration kept for the whole study.
+template <class P>
+NamedProblem EntryWithReference(std::string name, std::string description,
+                                P problem, InitialData initial) {
+  struct Shared {
+    explicit Shared(P p) : problem(std::move(p)) {}
+    P problem;
+    std::unique_ptr<OdeReference<P>> ode;  // refers to `problem`
+  };
+  const std::vector<double> zero(P::kDim, 0.0);
+  const int order = action::SystemOrder<double>(
+      problem, initial.x.data(),
+      initial.v.empty() ? zero.data() : initial.v.data());
+  auto shared = std::make_shared<Shared>(problem);
+  shared->ode = std::make_unique<OdeReference<P>>(shared->problem, order, 0.0,
+                                                  initial.x, initial.v, 1.0);
+  auto exact = [shared](const P&, double t) {
+    ExactState s{
+        std::vector<double>(P::kDim), std::vector<double>(P::kDim), {}};
+    shared->ode->State(t, s.x.data(), s.v.data());
+    return s;
+  };
+  return Entry(std::move(name), std::move(description), std::move(problem),
+               std::move(initial), exact, OdeReference<P>::Description());
+}
+
 template <class P>
 ExactState Scalar(const P& p, double t) {
   const auto s = p.Exact(t);
   return {{s.x}, {s.v}, {}};
+}
+
+// Canonical systems (L = ½|ẋ|² − V) whose Exact(t) returns (q, p): the
+// momentum is the velocity.
+template <class P>
+ExactState Canonical(const P& p, double t) {
+  const std::vector<double> y = p.Exact(t);
+  const std::size_t d = y.size() / 2;
+  return {{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
+}
+
+// The initial data of a Hamiltonian problem's state (q, p) for such a
+// system.
+template <class P>
+InitialData CanonicalInitial(const P& p) {
+  const std::vector<double> y = problems::InitialState(p);
+  const std::size_t d = y.size() / 2;
+  return {{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}};
 }
 
 }  // namespace detail

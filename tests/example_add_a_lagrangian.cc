@@ -56,8 +56,8 @@ std::string Example(const std::string& path) {
 
 BOOST_AUTO_TEST_CASE(Readme_ShowsTheCompiledExampleVerbatim) {
   const std::string readme = Slurp(VIVP_SOURCE_DIR "/README.md");
-  for (const char* file :
-       {"/problems/cyclotron.h", "/tests/example_add_a_lagrangian.cc"}) {
+  for (const char* file : {"/problems/cyclotron.h", "/lagrangians/cyclotron.cc",
+                           "/tests/example_add_a_lagrangian.cc"}) {
     const std::string code = Example(std::string(VIVP_SOURCE_DIR) + file);
     BOOST_TEST(readme.find("```cpp\n" + code + "```") != std::string::npos,
                "README does not show the example of " << file);

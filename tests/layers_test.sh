@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The layers' includes point one way:
 #
-#   core ← problems ← solvers ← studies, scene ← apps, figures, bench
-#   core ← report ← apps, figures
+#   core ← problems ← solvers ← studies, scene ← lagrangians ← apps, figures,
+#   bench;  core ← report ← apps, figures
 #
 # (report writes files and plots and needs only core). A file may include
 # its own layer and the layers below it; tests and examples may include
@@ -20,10 +20,11 @@ declare -A allowed=(
   [solvers]="core problems solvers"
   [studies]="core problems solvers studies"
   [scene]="core problems solvers scene"
+  [lagrangians]="core problems solvers studies scene lagrangians"
   [report]="core report"
-  [apps]="core problems solvers studies scene report apps"
-  [figures]="core problems solvers studies report figures"
-  [bench]="core problems solvers studies bench"
+  [apps]="core problems solvers studies scene report lagrangians apps"
+  [figures]="core problems solvers studies report lagrangians figures"
+  [bench]="core problems solvers studies lagrangians bench"
 )
 status=0
 

@@ -278,4 +278,12 @@ Series Reduction::Substitute(const GiNaC::ex& e, int order) {
   return out;
 }
 
+Series ReduceSeries(Reduction& red, const std::vector<GiNaC::ex>& c,
+                    int order) {
+  Series out(order);
+  for (int p = 0; p < static_cast<int>(c.size()) && p <= order; ++p)
+    if (!c[p].is_zero()) AddShifted(out, red.Substitute(c[p], order - p), p);
+  return out;
+}
+
 }  // namespace vivp::bea

@@ -109,6 +109,10 @@ class Reduction {
   std::map<std::tuple<int, int, int>, Series> powers_;
 };
 
+// sum_p h^p reduce(c_p): a jet polynomial series reduced to the 1-jet, each
+// c_p substituted to order - p.
+Series ReduceSeries(Reduction& red, const std::vector<GiNaC::ex>& c, int order);
+
 // Records in kept[k] that x^(k) (k >= 2) must be known to order `order`
 // wherever it occurs in e. Only what the expressions actually contain is
 // built: expanded Euler-Lagrange expressions of an order-p Lagrangian reach

@@ -64,4 +64,9 @@ Series ShiftUp(const Series& a, int shift) {
   return out;
 }
 
+void AddShifted(Series& out, const Series& s, int shift) {
+  for (int p = 0; p + shift <= out.order() && p <= s.order(); ++p)
+    if (!s[p].is_zero()) out[p + shift] = GiNaC::expand(out[p + shift] + s[p]);
+}
+
 }  // namespace vivp::bea

@@ -47,6 +47,8 @@ Series operator*(Series a, const GiNaC::ex& scalar);
 Series operator*(const Series& a, const Series& b);
 // h^shift * a, truncated at a.order().
 Series ShiftUp(const Series& a, int shift);
+// out += h^shift * s (s truncated so that the sum stays at out.order()).
+void AddShifted(Series& out, const Series& s, int shift);
 // Applies `op` (a linear map on polynomials, e.g. a partial derivative) to
 // every coefficient.
 template <class Op>

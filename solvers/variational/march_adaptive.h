@@ -21,100 +21,35 @@ class AdaptiveMarch : public MarchCore<P> {
 
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
-    const double span = grid_.t_end - grid_.t_start;
-    const int w = int(options_.window_points);
     const bool doubling = grid_.op == "sbp21";
     StepController control(EstimateOrder(grid_.op));
     double t = grid_.t_start;
     double dt = InitialStep(state);
     int rejected_in_row = 0;
-    // Since the last accepted window: the largest step rejected on
-    // truncation, and whether a step below it was tried after round-off.
-    double truncation_rejected_at = 0;
-    bool tried_between = false;
     while (t < grid_.t_end) {
-      if (order_ == 2) {
-        // Keep Δt·ω at half the stability limit (resolution.h) at the
-        // window's start.
-        const double omega =
-            FastestFrequency(problem_, state.x.data(), state.v.data());
-        if (omega > 0)
-          dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
-      }
-      const double remaining = grid_.t_end - t;
-      int n = w;
-      double dtw = dt;
-      bool last = false;
-      if (remaining <= double(w - 1) * dt * (1 + 1e-12)) {
-        n = int(std::ceil(remaining / dt - 1e-9)) + 1;
-        n = std::clamp(n, min_points_, w);
-        dtw = remaining / double(n - 1);
-        last = true;
-      } else if (remaining < 2.0 * double(w - 1) * dt) {
-        dtw = remaining / (2.0 * double(w - 1));  // two equal windows left
-      }
-      const bool underflow = !(dtw > 1e-13 * std::max(std::abs(t), span));
-      if (underflow || rejected_in_row > 40) {
-        Unreachable(t, (underflow ? "the step fell to " + Text(dtw) +
-                                        ", below the round-off limit 1e-13 of "
-                                        "the time span"
-                                  : std::to_string(rejected_in_row) +
-                                        " windows in a row rejected (step " +
-                                        Text(dtw) + ")") +
-                           (last_why_.empty() ? "" : "; last: " + last_why_));
-        return false;
-      }
-      if (out_.points + n > options_.max_points) {
-        Unreachable(t, "it needs more than max_points = " +
-                           std::to_string(options_.max_points) +
-                           " nodes (step " + Text(dtw) + ")");
-        return false;
-      }
-      Attempt a =
-          this->Solve(state, n, dtw, false, PredictorTolerance(), false);
+      const Window w = NextWindow(t, dt, state);
+      if (!CanContinue(t, w, rejected_in_row)) return false;
+      Attempt a = this->Solve(state, w.points, w.dt, false,
+                              PredictorTolerance(), false);
       if (a.ok() && doubling) a = Doubled(state, a);
       const double err = a.ok() ? ErrorNorm(state, a) : NAN;
       if (!a.ok() || !(err <= 1)) {
         ++out_.rejected;
         ++rejected_in_row;
-        last_why_ = a.ok()
-                        ? "error estimate " + Text(err) + " times the tolerance"
-                        : a.why;
-        last_residual_ = a.residual;
-        // Truncation errors fall with the step; the round-off of (Dx)_N
-        // grows like ε|x|/Δt. A window rejected on a velocity estimate at
-        // its round-off level needs a larger step, not a smaller one. When a
-        // larger step was rejected on truncation since the last accepted
-        // window, one step between the two is tried; if that fails too, no
-        // step meets the tolerance in double precision here (measured:
-        // SBP84 on Kepler e = 0.9 below 1e-9).
-        const std::string roundoff = a.ok() ? RoundOffBound(state, a) : "";
-        if (!roundoff.empty()) {
-          if (truncation_rejected_at > dtw && tried_between) {
-            Unreachable(t, roundoff);
-            return false;
-          }
-          tried_between = truncation_rejected_at > dtw;
-          dt =
-              tried_between ? std::sqrt(dtw * truncation_rejected_at) : 4 * dtw;
-          continue;
-        }
-        if (a.ok())
-          truncation_rejected_at = std::max(truncation_rejected_at, dtw);
-        dt = a.ok() ? control.Reject(dtw, err) : 0.25 * dtw;
+        if (!Rejected(state, a, err, t, w.dt, control, dt)) return false;
         continue;
       }
       rejected_in_row = 0;
-      truncation_rejected_at = 0;
-      tried_between = false;
+      truncation_rejected_at_ = 0;
+      tried_between_ = false;
       const double t0 = t, t1 = t + a.dt * double(a.points - 1);
-      this->Accept(a, state, t0, 1, last ? a.points : a.points - 1, 0, err,
+      this->Accept(a, state, t0, 1, w.last ? a.points : a.points - 1, 0, err,
                    [&](long long i) {
-                     return i == a.points - 1 ? (last ? grid_.t_end : t1)
+                     return i == a.points - 1 ? (w.last ? grid_.t_end : t1)
                                               : t0 + a.dt * double(i);
                    });
-      t = last ? grid_.t_end : t + a.dt * double(a.points - 1);
-      dt = control.Accept(dtw, err);
+      t = w.last ? grid_.t_end : t1;
+      dt = control.Accept(w.dt, err);
     }
     return true;
   }
@@ -127,6 +62,87 @@ class AdaptiveMarch : public MarchCore<P> {
   using Core::out_;
   using Core::problem_;
   using Core::Text;
+
+  // The next window from t: W points at the step dt, which is first kept at
+  // half the stability limit of Δt·ω (resolution.h); the last windows are
+  // fitted to end at T exactly (two equal ones when less than two remain).
+  struct Window {
+    int points;
+    double dt;
+    bool last;
+  };
+  Window NextWindow(double t, double& dt, const InitialData& state) const {
+    if (order_ == 2) {
+      const double omega =
+          FastestFrequency(problem_, state.x.data(), state.v.data());
+      if (omega > 0) dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
+    }
+    const int w = int(options_.window_points);
+    const double remaining = grid_.t_end - t;
+    if (remaining <= double(w - 1) * dt * (1 + 1e-12)) {
+      const int n =
+          std::clamp(int(std::ceil(remaining / dt - 1e-9)) + 1, min_points_, w);
+      return {n, remaining / double(n - 1), true};
+    }
+    if (remaining < 2.0 * double(w - 1) * dt)
+      return {w, remaining / (2.0 * double(w - 1)), false};
+    return {w, dt, false};
+  }
+
+  // False, with the status set, when the march cannot go on: the step fell
+  // to the round-off of the time span, too many windows in a row were
+  // rejected, or the nodes would exceed max_points.
+  bool CanContinue(double t, const Window& w, int rejected_in_row) {
+    const double span = grid_.t_end - grid_.t_start;
+    const bool underflow = !(w.dt > 1e-13 * std::max(std::abs(t), span));
+    if (underflow || rejected_in_row > 40) {
+      Unreachable(t, (underflow ? "the step fell to " + Text(w.dt) +
+                                      ", below the round-off limit 1e-13 of "
+                                      "the time span"
+                                : std::to_string(rejected_in_row) +
+                                      " windows in a row rejected (step " +
+                                      Text(w.dt) + ")") +
+                         (last_why_.empty() ? "" : "; last: " + last_why_));
+      return false;
+    }
+    if (out_.points + w.points > options_.max_points) {
+      Unreachable(t, "it needs more than max_points = " +
+                         std::to_string(options_.max_points) + " nodes (step " +
+                         Text(w.dt) + ")");
+      return false;
+    }
+    return true;
+  }
+
+  // A rejected window at step dtw: sets the next step dt, or the status and
+  // false when no step meets the tolerance in double precision.
+  //
+  // Truncation errors fall with the step; the round-off of (Dx)_N grows like
+  // ε|x|/Δt. A window rejected on a velocity estimate at its round-off level
+  // needs a larger step, not a smaller one. When a larger step was rejected
+  // on truncation since the last accepted window, one step between the two
+  // is tried; if that fails too, no step meets the tolerance here (measured:
+  // SBP84 on Kepler e = 0.9 below 1e-9).
+  bool Rejected(const InitialData& state, const Attempt& a, double err,
+                double t, double dtw, StepController& control, double& dt) {
+    last_why_ =
+        a.ok() ? "error estimate " + Text(err) + " times the tolerance" : a.why;
+    last_residual_ = a.residual;
+    const std::string roundoff = a.ok() ? RoundOffBound(state, a) : "";
+    if (!roundoff.empty()) {
+      if (truncation_rejected_at_ > dtw && tried_between_) {
+        Unreachable(t, roundoff);
+        return false;
+      }
+      tried_between_ = truncation_rejected_at_ > dtw;
+      dt = tried_between_ ? std::sqrt(dtw * truncation_rejected_at_) : 4 * dtw;
+      return true;
+    }
+    if (a.ok())
+      truncation_rejected_at_ = std::max(truncation_rejected_at_, dtw);
+    dt = a.ok() ? control.Reject(dtw, err) : 0.25 * dtw;
+    return true;
+  }
 
   // The predictor's tolerance: a hundredth of the march's, so that its error
   // is small against the window's (the consistency check compares them).
@@ -230,6 +246,10 @@ class AdaptiveMarch : public MarchCore<P> {
 
   std::string last_why_;
   double last_residual_ = NAN;
+  // Since the last accepted window: the largest step rejected on
+  // truncation, and whether a step below it was tried after round-off.
+  double truncation_rejected_at_ = 0;
+  bool tried_between_ = false;
 };
 
 }  // namespace vivp::detail

@@ -25,8 +25,10 @@
 //     in plain double.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -35,6 +37,7 @@
 
 #include "core/action/full_system.h"
 #include "core/action/reduced_system.h"
+#include "core/autodiff/pointwise.h"
 #include "core/sbp/builder.h"
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/newton.h"
@@ -50,6 +53,33 @@ inline void CheckFinite(const std::vector<double>& v, const char* what) {
       throw std::invalid_argument(std::string(what) +
                                   " contains a non-finite value; all initial "
                                   "data must be finite");
+}
+
+// The velocity v with ∂L/∂ẋ(x, v) = p, by Newton from the guess v:
+// v ← v + M(x, v)⁻¹ (p − ∂L/∂ẋ(x, v)), M = ∂²L/∂ẋ². The guess M⁻¹p is the
+// answer when L = ½ẋᵀMẋ − V (no step is taken: the residual is round-off);
+// with a term linear in ẋ, a vector potential b(x)·ẋ, p = Mẋ + b and one
+// step reaches v = M⁻¹(p − b); a few reach round-off for other L.
+template <class Real, class P>
+Eigen::Matrix<Real, P::kDim, 1> VelocityOfMomentum(
+    const P& problem, const Real* x, Eigen::Matrix<Real, P::kDim, 1> v,
+    const Eigen::Matrix<Real, P::kDim, 1>& p) {
+  constexpr int d = P::kDim;
+  constexpr Real kEps = std::numeric_limits<Real>::epsilon();
+  Real z[2 * d];
+  for (int c = 0; c < d; ++c) z[c] = x[c];
+  for (int step = 0; step < 4; ++step) {
+    for (int c = 0; c < d; ++c) z[d + c] = v[c];
+    const auto h = ad::Hessian<Real, 2 * d>(
+        [&](const auto* y) { return problem(y, y + d); }, z);
+    const Eigen::Matrix<Real, d, 1> r = p - h.gradient.template tail<d>();
+    const Real scale =
+        std::max(p.cwiseAbs().maxCoeff(),
+                 h.gradient.template tail<d>().cwiseAbs().maxCoeff());
+    if (r.cwiseAbs().maxCoeff() <= Real(16) * kEps * scale) break;
+    v += h.hessian.template bottomRightCorner<d, d>().fullPivLu().solve(r);
+  }
+  return v;
 }
 
 // The multiplier-corrected end state (docs/method.md §7) from the end node
@@ -73,12 +103,21 @@ CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
   if (order == 2) {
     Vec l4;
     for (int c = 0; c < d; ++c) l4[c] = lambda4[c];
-    const auto lu = action::MassMatrix<Real>(problem, xn, vn).fullPivLu();
+    const auto hessian = action::LagrangianHessian<Real>(problem, xn, vn);
+    const auto lu = Mat(hessian.template bottomRightCorner<d, d>()).fullPivLu();
     const Vec shift = lu.solve(l4);
-    const Vec momentum = -l3;
-    const Vec velocity = lu.solve(momentum);
+    // −λ3 is the momentum at x_N; moved to the corrected position along
+    // ∂²L/∂x∂ẋ (zero unless L couples x and ẋ, as a vector potential does),
+    // it keeps the corrected order (docs/method.md §7).
+    const Vec momentum =
+        -l3 + Mat(hessian.template topRightCorner<d, d>()) * shift;
+    // At the corrected position: with a vector potential, b(x_N) would
+    // carry x_N's lower order into the velocity.
+    const Vec position = xv + shift;
+    const Vec velocity = VelocityOfMomentum(problem, position.data(),
+                                            Vec(lu.solve(momentum)), momentum);
     for (int c = 0; c < d; ++c) {
-      e.position.push_back(xv[c] + shift[c]);
+      e.position.push_back(position[c]);
       e.momentum.push_back(momentum[c]);
       e.velocity.push_back(velocity[c]);
     }

@@ -1,0 +1,53 @@
+#include "apps/run_progress.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace vivp::app {
+
+ProgressLine::ProgressLine(const FileSink& sink, double t_start, double t_end,
+                           bool show)
+    : sink_(sink), t_start_(t_start), t_end_(t_end) {
+  if (show && isatty(STDERR_FILENO)) thread_ = std::thread([this] { Loop(); });
+}
+
+void ProgressLine::Stop() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+  if (printed_) std::cerr << "\r\033[K" << std::flush;
+}
+
+void ProgressLine::Loop() {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (wake_.wait_for(lock, std::chrono::seconds(1), [this] { return done_; }))
+    return;
+  do {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count();
+    const double f = sink_.fraction();
+    std::ostringstream line;
+    line << "\r\033[Kvivp: ";
+    if (f > 0)
+      line << std::fixed << std::setprecision(0) << 100 * f
+           << " % (t = " << std::setprecision(3)
+           << t_start_ + f * (t_end_ - t_start_) << " of " << t_end_ << "), ";
+    else
+      line << "solving, ";
+    line << std::fixed << std::setprecision(1) << seconds << " s";
+    std::cerr << line.str() << std::flush;
+    printed_ = true;
+  } while (!wake_.wait_for(lock, std::chrono::milliseconds(500),
+                           [this] { return done_; }));
+}
+
+}  // namespace vivp::app

@@ -1,0 +1,76 @@
+// One statement makes a Lagrangian known by name wherever vivp takes one:
+//
+//   namespace {
+//   const bool registered = vivp::Register<Spring>({
+//       .name = "spring",
+//       .description = "harmonic spring, L = ½ẋ² − ½kx²",
+//       .initial = {{1.0}, {0.0}},
+//       .parameters = {{"k", &Spring::k}},
+//   });
+//   }  // namespace
+//
+// written below the struct, in a file of its own in lagrangians/ (every file
+// there is compiled into the programs: no list, no CMakeLists to edit). The
+// Lagrangian is then `vivp converge --problem spring` — measured against
+// `exact` when given, otherwise against a reference integration of its
+// Euler–Lagrange equations, and the study says which — and a scene
+// `type = "spring"` with the listed parameters.
+//
+// Registration runs during static initialization; the registries it fills
+// are function-local statics, so the order of the files does not matter.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/register_lagrangian.h"
+#include "studies/registry_entry.h"
+
+namespace vivp {
+
+// Every field has a default, so that a registration names only what it
+// has (and -Wmissing-field-initializers stays quiet).
+template <class L>
+struct Registration {
+  std::string name = {};         // the name on the command line and in scenes
+  std::string description = {};  // one line, shown by `vivp converge`
+  InitialData initial = {};      // of `vivp converge` and the figures
+  // Members a scene may set (`type = "NAME"` with `member = value`).
+  std::vector<std::pair<std::string, double L::*>> parameters = {};
+  // The closed form, if there is one: position and velocity at t for the
+  // initial data above.
+  std::function<ExactState(const L&, double)> exact = {};
+};
+
+// The second argument of Register for a Lagrangian not offered as a scene
+// type: a variant of another registration, or a system the built-in effects
+// already compose. (The scene runner is then not compiled for it.)
+struct NotInScenes {};
+inline constexpr NotInScenes kNotInScenes{};
+
+// Adds L to the problems of `vivp converge`, the figures and the tests.
+template <class L>
+bool Register(Registration<L> r, NotInScenes) {
+  const L problem{};
+  if (r.exact)
+    AddProblem(
+        detail::Entry(r.name, r.description, problem, r.initial, r.exact));
+  else
+    AddProblem(
+        detail::EntryWithReference(r.name, r.description, problem, r.initial));
+  return true;
+}
+
+// Adds L everywhere (see above); returns true so that a namespace-scope
+// constant can hold the call. A name taken twice ends the program at start
+// with std::logic_error naming it.
+template <class L>
+bool Register(Registration<L> r) {
+  scene::AddRegistered(
+      scene::MakeRegistered<L>(r.name, r.description, r.parameters));
+  return Register(std::move(r), kNotInScenes);
+}
+
+}  // namespace vivp

@@ -1,0 +1,107 @@
+// [method]: the kind (variational or a stepper) and, for the variational
+// method, the operator, the solver, the windows and the error control.
+#include "core/sbp/builder.h"
+#include "scene/run.h"
+#include "scene/sections.h"
+#include "scene/text.h"
+
+namespace vivp::scene::detail {
+
+namespace {
+
+// tolerance = 1e-6 (absolute and relative) or {absolute = …, relative = …}.
+void ReadTolerance(const TomlReader& r, const toml::table& method,
+                   const toml::node& n, Scene& s) {
+  const std::string expected =
+      "expected tolerance = 1e-6 (absolute and relative) or tolerance = "
+      "{absolute = 1e-8, relative = 1e-6}, numbers in [0, 1) with at least "
+      "one positive";
+  auto value = [&](const toml::node& v, const std::string& key) {
+    const double x = r.Number(v, key, "a number in [0, 1)");
+    if (!(x >= 0 && x < 1))
+      r.Fail(v, Quote(key) + " = " + FormatNumber(x) + " is outside [0, 1)",
+             expected);
+    return x;
+  };
+  Tolerance tol;
+  if (const toml::table* tt = n.as_table()) {
+    r.CheckKeys(*tt, "tolerance", {"absolute", "relative"});
+    if (const toml::node* a = tt->get("absolute"))
+      tol.absolute = value(*a, "absolute");
+    if (const toml::node* rel = tt->get("relative"))
+      tol.relative = value(*rel, "relative");
+  } else {
+    tol.absolute = tol.relative = value(n, "tolerance");
+  }
+  if (!tol.enabled()) r.Fail(n, "a tolerance of zero cannot be met", expected);
+  // Double precision ends near 1e-14 relative; the windows' estimates
+  // (round-off of the closure velocity) well before.
+  if (tol.relative > 0 && tol.relative < 1e-14)
+    r.Fail(n,
+           "a relative tolerance of " + FormatNumber(tol.relative) +
+               " is beyond double precision",
+           "expected a relative tolerance of at least 1e-14 (or 0 with an "
+           "absolute one)");
+  if (s.method.solver == "ceres-lm")
+    r.Fail(n, "solver = \"ceres-lm\" solves globally and cannot march",
+           "expected no tolerance, or solver = \"newton\"");
+  if (const toml::node* w = method.get("slab_points");
+      w && s.method.slab_points == 0)
+    r.Fail(*w,
+           "slab_points = 0 asks for one global solve, but a tolerance "
+           "marches in windows",
+           "expected slab_points >= " +
+               std::to_string(sbp::Table(s.method.op).min_points) +
+               " or no slab_points (48)");
+  if (s.method.slab_points == 0) s.method.slab_points = 48;
+  s.method.tolerance = tol;
+}
+
+}  // namespace
+
+void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s) {
+  const toml::table& t = r.Table(root, "method", false);
+  r.CheckKeys(t, "[method]",
+              {"kind", "operator", "solver", "slab_points", "tolerance"});
+  if (const toml::node* n = t.get("kind"))
+    s.method.kind = r.Choice(*n, "kind", MethodKinds());
+  if (!s.variational()) {
+    for (const char* key : {"operator", "solver", "slab_points", "tolerance"})
+      if (const toml::node* n = t.get(key))
+        r.Fail(*n, Quote(key) + " applies to kind = \"variational\" only",
+               "expected no " + Quote(key) + " for the stepper " +
+                   Quote(s.method.kind));
+    const std::string why = StepperUnavailable(s);
+    if (!why.empty())
+      r.Fail(*t.get("kind"), "kind = \"" + s.method.kind + "\" " + why,
+             "expected kind = \"variational\"");
+    return;
+  }
+  std::vector<std::string> ops(sbp::kOperatorNames.begin(),
+                               sbp::kOperatorNames.end());
+  if (const toml::node* n = t.get("operator"))
+    s.method.op = r.Choice(*n, "operator", ops);
+  if (const toml::node* n = t.get("solver"))
+    s.method.solver =
+        r.Choice(*n, "solver", {"newton", "full-newton", "ceres-lm"});
+  if (const toml::node* n = t.get("slab_points")) {
+    const long long minimum = sbp::Table(s.method.op).min_points;
+    s.method.slab_points =
+        r.Whole(*n, "slab_points", 0,
+                "0 (one global solve) or at least " + std::to_string(minimum) +
+                    " for " + s.method.op);
+    if (s.method.slab_points > 0 && s.method.slab_points < minimum)
+      r.Fail(*n,
+             "slab_points = " + std::to_string(s.method.slab_points) +
+                 " is below the minimum of " + std::to_string(minimum) +
+                 " for " + s.method.op,
+             "expected 0 (one global solve) or at least " +
+                 std::to_string(minimum));
+    if (s.method.slab_points > 0 && s.method.solver == "ceres-lm")
+      r.Fail(*n, "solver = \"ceres-lm\" solves globally and cannot march",
+             "expected slab_points = 0, or solver = \"newton\"");
+  }
+  if (const toml::node* n = t.get("tolerance")) ReadTolerance(r, t, *n, s);
+}
+
+}  // namespace vivp::scene::detail

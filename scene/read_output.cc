@@ -1,0 +1,50 @@
+// [output]: the diagnostics, the reference solution and the stride, each
+// checked against the system it is for.
+#include "scene/reference.h"
+#include "scene/sections.h"
+#include "scene/text.h"
+
+namespace vivp::scene::detail {
+
+void ReadOutput(const TomlReader& r, const toml::table& root, Scene& s) {
+  const toml::table& t = r.Table(root, "output", false);
+  r.CheckKeys(t, "[output]", {"diagnostics", "reference", "stride"});
+  if (const toml::node* n = t.get("reference"))
+    s.output.reference = r.Choice(*n, "reference", ReferenceNames());
+  if (const toml::node* n = t.get("stride"))
+    s.output.stride = r.Whole(*n, "stride", 1, "a whole number >= 1");
+  if (const toml::node* n = t.get("diagnostics")) {
+    const toml::array* a = n->as_array();
+    if (!a)
+      r.Fail(*n, "'diagnostics' must be an array, got " + TypeName(*n),
+             "expected e.g. diagnostics = [\"energy\"], names from " +
+                 Join(DiagnosticNames()));
+    for (const toml::node& e : *a) {
+      const std::string d = r.Choice(e, "diagnostic", DiagnosticNames());
+      if (s.Wants(d))
+        r.Fail(e, "diagnostic " + Quote(d) + " is listed twice",
+               "expected each diagnostic once");
+      if (d == "error" && s.output.reference == "none")
+        r.Fail(e, "diagnostic 'error' needs a reference solution",
+               "expected reference = \"exact\" or \"ode\" in [output]");
+      if (d == "energy" && s.order == 1)
+        r.Fail(e, "diagnostic 'energy' needs a second-order system",
+               "expected a 'kinetic' effect, or no 'energy'");
+      if (d == "angular_momentum" && s.dof != 2 && s.dof != 3)
+        r.Fail(e,
+               "diagnostic 'angular_momentum' needs dof = 2 or 3, not " +
+                   std::to_string(s.dof),
+               "expected dof = 2 or 3, or no 'angular_momentum'");
+      s.output.diagnostics.push_back(d);
+    }
+  }
+  if (s.output.reference == "exact") {
+    const std::string why = ExactSolutionUnavailable(s);
+    if (!why.empty())
+      r.Fail(*t.get("reference"), "reference = \"exact\": " + why,
+             "expected reference = \"ode\" (the Euler–Lagrange equations "
+             "by automatic differentiation, integrated to 1e-13) or \"none\"");
+  }
+}
+
+}  // namespace vivp::scene::detail

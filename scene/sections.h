@@ -1,0 +1,27 @@
+// The readers of a scene's sections, called by ParseScene (reader.cc) in
+// this order: [system], [[effect]], [method] (before [time]: the operator
+// sets the minimum of points), [initial], [time], [output]. Each checks its
+// section against what the earlier ones fixed and fills its part of the
+// scene; a bad value throws a SceneError (toml_reader.h).
+#pragma once
+
+#include <toml++/toml.h>
+
+#include "scene/scene.h"
+#include "scene/toml_reader.h"
+
+namespace vivp::scene::detail {
+
+// [system]: the number of coordinates. Returns the node of `dof`, which the
+// effects' check of it points at.
+const toml::node& ReadSystem(const TomlReader& r, const toml::table& root,
+                             Scene& s);
+// The [[effect]] tables and the order of the system they make.
+void ReadEffects(const TomlReader& r, const toml::table& root,
+                 const toml::node& dof_node, Scene& s);
+void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s);
+void ReadInitial(const TomlReader& r, const toml::table& root, Scene& s);
+void ReadTime(const TomlReader& r, const toml::table& root, Scene& s);
+void ReadOutput(const TomlReader& r, const toml::table& root, Scene& s);
+
+}  // namespace vivp::scene::detail

@@ -1,0 +1,78 @@
+// A Lagrangian added the way a researcher adds one: the struct and one
+// registration statement in one file (here, this test's), nothing else
+// edited. It is then a problem of `vivp converge` — measured against a
+// reference integration of its Euler–Lagrange equations, since it has no
+// closed form given — and a scene type with its parameter.
+#define BOOST_TEST_MODULE registration
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+
+#include "lagrangians/register.h"
+#include "scene/run.h"
+#include "scene/scene.h"
+#include "studies/registry.h"
+
+namespace {
+
+// --- the researcher's file ---
+// A Duffing oscillator, L = ½ẋ² − ½ax² − ¼bx⁴: no closed form is given.
+struct Duffing {
+  static constexpr int kDim = 1;
+  double a = 1.0, b = 4.0;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return T(0.5) * v[0] * v[0] - T(0.5 * a) * x[0] * x[0] -
+           T(0.25 * b) * x[0] * x[0] * x[0] * x[0];
+  }
+};
+
+const bool registered = vivp::Register<Duffing>({
+    .name = "fixture_duffing",
+    .description = "Duffing oscillator, L = ½ẋ² − ½ax² − ¼bx⁴",
+    .initial = {{1.0}, {0.0}},
+    .parameters = {{"a", &Duffing::a}, {"b", &Duffing::b}},
+});
+// --- end of the researcher's file ---
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(RegisteredLagrangian_IsAConvergeProblemWithAReference) {
+  BOOST_TEST(registered);
+  const vivp::NamedProblem& p = vivp::FindProblem("fixture_duffing");
+  BOOST_TEST(p.reference.find("Euler–Lagrange") != std::string::npos,
+             p.reference);
+  BOOST_TEST(vivp::ProblemNameList().find("fixture_duffing") !=
+             std::string::npos);
+  // The study converges at the operator's order against the reference:
+  // SBP42's corrected end position at order 4 (docs/method.md §7).
+  const vivp::ConvergenceStudy s =
+      vivp::RunConvergence(p, {.op = "sbp42", .t_end = 2.0},
+                           {129, 257, 513, 1025}, vivp::SolveOptions{});
+  for (const auto& r : s.rows) BOOST_TEST(r.converged, r.reason);
+  BOOST_TEST_MESSAGE("orders: x " << s.orders.x << ", x+λ4 "
+                                  << s.orders.x_corrected);
+  BOOST_TEST(std::abs(s.orders.x_corrected - 4.0) < 0.3);
+  BOOST_TEST(s.rows.back().err_x_corrected < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(RegisteredLagrangian_IsASceneTypeWithItsParameters) {
+  const vivp::scene::Scene s = vivp::scene::ParseScene(
+      "[system]\ndof = 1\n"
+      "[[effect]]\ntype = \"fixture_duffing\"\nb = 0.0\n"
+      "[initial]\nx = [1.0]\nv = [0.0]\n"
+      "[time]\nend = 3.0\npoints = 301\n"
+      "[method]\nkind = \"variational\"\noperator = \"sbp42\"\n",
+      "fixture.toml");
+  // With b = 0 the oscillator is harmonic with ω = 1: x(3) = cos 3.
+  class End : public vivp::scene::RunSink {
+   public:
+    void Begin(const vivp::scene::RunLayout&) override {}
+    void Node(double, const double* x, const double*, const double*) override {
+      last = x[0];
+    }
+    double last = NAN;
+  } sink;
+  const auto outcome = vivp::scene::RunScene(s, sink);
+  BOOST_TEST(outcome.converged, outcome.status);
+  BOOST_TEST(std::abs(sink.last - std::cos(3.0)) < 1e-6);
+}
