@@ -39,6 +39,7 @@
 #include "core/action/reduced_system.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/builder.h"
+#include "solvers/variational/end_state.h"
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
@@ -53,83 +54,6 @@ inline void CheckFinite(const std::vector<double>& v, const char* what) {
       throw std::invalid_argument(std::string(what) +
                                   " contains a non-finite value; all initial "
                                   "data must be finite");
-}
-
-// The velocity v with ∂L/∂ẋ(x, v) = p, by Newton from the guess v:
-// v ← v + M(x, v)⁻¹ (p − ∂L/∂ẋ(x, v)), M = ∂²L/∂ẋ². The guess M⁻¹p is the
-// answer when L = ½ẋᵀMẋ − V (no step is taken: the residual is round-off);
-// with a term linear in ẋ, a vector potential b(x)·ẋ, p = Mẋ + b and one
-// step reaches v = M⁻¹(p − b); a few reach round-off for other L.
-template <class Real, class P>
-Eigen::Matrix<Real, P::kDim, 1> VelocityOfMomentum(
-    const P& problem, const Real* x, Eigen::Matrix<Real, P::kDim, 1> v,
-    const Eigen::Matrix<Real, P::kDim, 1>& p) {
-  constexpr int d = P::kDim;
-  constexpr Real kEps = std::numeric_limits<Real>::epsilon();
-  Real z[2 * d];
-  for (int c = 0; c < d; ++c) z[c] = x[c];
-  for (int step = 0; step < 4; ++step) {
-    for (int c = 0; c < d; ++c) z[d + c] = v[c];
-    const auto h = ad::Hessian<Real, 2 * d>(
-        [&](const auto* y) { return problem(y, y + d); }, z);
-    const Eigen::Matrix<Real, d, 1> r = p - h.gradient.template tail<d>();
-    const Real scale =
-        std::max(p.cwiseAbs().maxCoeff(),
-                 h.gradient.template tail<d>().cwiseAbs().maxCoeff());
-    if (r.cwiseAbs().maxCoeff() <= Real(16) * kEps * scale) break;
-    v += h.hessian.template bottomRightCorner<d, d>().fullPivLu().solve(r);
-  }
-  return v;
-}
-
-// The multiplier-corrected end state (docs/method.md §7) from the end node
-// (x_N, (Dx)_N) and the multipliers: λ3 = −p(T), and x_N + M⁻¹λ4 is the
-// quadrature of the integral form of x, one order better than x_N
-// (first-order systems: x_N + C⁻¹λ3, C the coefficient of ẋ).
-template <class Real, class P>
-CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
-                              const Real* vn, const Real* lambda3,
-                              const Real* lambda4) {
-  constexpr int d = P::kDim;
-  using Mat = Eigen::Matrix<Real, d, d>;
-  using Vec = Eigen::Matrix<Real, d, 1>;
-  Vec l3, xv, vv;
-  for (int c = 0; c < d; ++c) {
-    l3[c] = lambda3[c];
-    xv[c] = xn[c];
-    vv[c] = vn[c];
-  }
-  CorrectedEnd<Real> e;
-  if (order == 2) {
-    Vec l4;
-    for (int c = 0; c < d; ++c) l4[c] = lambda4[c];
-    const auto hessian = action::LagrangianHessian<Real>(problem, xn, vn);
-    const auto lu = Mat(hessian.template bottomRightCorner<d, d>()).fullPivLu();
-    const Vec shift = lu.solve(l4);
-    // −λ3 is the momentum at x_N; moved to the corrected position along
-    // ∂²L/∂x∂ẋ (zero unless L couples x and ẋ, as a vector potential does),
-    // it keeps the corrected order (docs/method.md §7).
-    const Vec momentum =
-        -l3 + Mat(hessian.template topRightCorner<d, d>()) * shift;
-    // At the corrected position: with a vector potential, b(x_N) would
-    // carry x_N's lower order into the velocity.
-    const Vec position = xv + shift;
-    const Vec velocity = VelocityOfMomentum(problem, position.data(),
-                                            Vec(lu.solve(momentum)), momentum);
-    for (int c = 0; c < d; ++c) {
-      e.position.push_back(position[c]);
-      e.momentum.push_back(momentum[c]);
-      e.velocity.push_back(velocity[c]);
-    }
-    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
-    e.velocity_error_estimate = double((vv - velocity).cwiseAbs().maxCoeff());
-  } else {
-    const Mat coeff = action::FirstOrderCoefficient<Real>(problem, xn, vn);
-    const Vec shift = coeff.fullPivLu().solve(l3);
-    for (int c = 0; c < d; ++c) e.position.push_back(xv[c] + shift[c]);
-    e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
-  }
-  return e;
 }
 
 template <class P, class Real>
