@@ -13,19 +13,24 @@
 // there is compiled into the programs: no list, no CMakeLists to edit). The
 // Lagrangian is then `vivp converge --problem spring` — measured against
 // `exact` when given, otherwise against a reference integration of its
-// Euler–Lagrange equations, and the study says which — and a scene
-// `type = "spring"` with the listed parameters.
+// Euler–Lagrange equations, and the study says which — a scene
+// `type = "spring"` with the listed parameters, and `vivp bench --problem
+// spring` when L = ½ẋᵀMẋ + b(x)·ẋ − V has a Hamiltonian form
+// (studies/legendre.h).
 //
 // Registration runs during static initialization; the registries it fills
 // are function-local statics, so the order of the files does not matter.
 #pragma once
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/action/density.h"
 #include "scene/register_lagrangian.h"
+#include "studies/bench_lagrangian.h"
 #include "studies/registry_entry.h"
 
 namespace vivp {
@@ -42,6 +47,8 @@ struct Registration {
   // The closed form, if there is one: position and velocity at t for the
   // initial data above.
   std::function<ExactState(const L&, double)> exact = {};
+  // The span of `vivp bench` (from t = 0), where L has a Hamiltonian form.
+  double bench_t_end = 10.0;
 };
 
 // The second argument of Register for a Lagrangian not offered as a scene
@@ -50,9 +57,42 @@ struct Registration {
 struct NotInScenes {};
 inline constexpr NotInScenes kNotInScenes{};
 
-// Adds L to the problems of `vivp converge`, the figures and the tests.
+namespace detail {
+
+// Offers L to `vivp bench`: its Legendre form is found when the bench's
+// problems are first listed (legendre.h), not at start-up.
+template <class L>
+void AddToBench(const Registration<L>& r) {
+  constexpr int d = L::kDim;
+  std::function<steppers::BenchProblem()> make;
+  if constexpr (action::HasLambda<L>) {
+    make = []() -> steppers::BenchProblem {
+      throw std::domain_error("L has a dissipative term Λ");
+    };
+  } else if constexpr (d > steppers::kMaxBenchDim) {
+    make = []() -> steppers::BenchProblem {
+      throw std::domain_error("the bench is compiled for 1 to 3 coordinates");
+    };
+  } else {
+    make = [l = L{}, name = r.name, init = r.initial, t = r.bench_t_end] {
+      const LegendreForm<d> form = FindLegendreForm(l, init);
+      if (form.separable)
+        return steppers::LagrangianBenchProblem<d, true>(
+            name, steppers::ErasedHamiltonian<d, true>::Of(l, form, init), t);
+      return steppers::LagrangianBenchProblem<d, false>(
+          name, steppers::ErasedHamiltonian<d, false>::Of(l, form, init), t);
+    };
+  }
+  steppers::AddBenchCandidate(r.name, std::move(make));
+}
+
+}  // namespace detail
+
+// Adds L to the problems of `vivp converge`, `vivp bench`, the figures and
+// the tests.
 template <class L>
 bool Register(Registration<L> r, NotInScenes) {
+  detail::AddToBench(r);
   const L problem{};
   if (r.exact)
     AddProblem(

@@ -1,8 +1,10 @@
 // The named problems of the work–precision comparison (bench_problems.h).
 #include "studies/bench_problems.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -13,6 +15,7 @@
 #include "problems/nldnls.h"
 #include "problems/pendulum.h"
 #include "problems/phase_space.h"
+#include "studies/bench_problem_of.h"
 #include "studies/work_precision.h"
 
 namespace vivp::steppers {
@@ -43,33 +46,23 @@ struct AnharmonicHamiltonian : problems::Anharmonic {
 
 }  // namespace
 
-namespace detail {
+namespace {
 
-template <class Problem>
-BenchProblem MakeBenchProblem(std::string name, std::string description,
-                              Problem problem, double t_end, long first_steps,
-                              std::string reference,
-                              std::function<std::vector<double>()> exact) {
-  BenchProblem b;
-  b.name = name;
-  b.description = std::move(description);
-  b.reference = std::move(reference);
-  b.t_end = t_end;
-  b.first_steps = first_steps;
-  b.methods = WorkPrecisionMethods<Problem>();
-  std::erase_if(b.methods, [&](const std::string& m) {
-    return !ExternalMethodApplies(m, name);
-  });
-  b.invariant_names = problems::InvariantNames<Problem>();
-  // The reference is computed on first use and kept.
-  auto cache = std::make_shared<std::vector<double>>();
-  b.measure = [=](const std::string& method, double knob, int repeats) {
-    if (cache->empty()) *cache = exact();
-    return Measure(name, problem, method, problems::InitialState(problem),
-                   *cache, t_end, knob, repeats);
-  };
-  return b;
+// Function-local, so that registrations in any translation unit find them
+// constructed whatever the order of static initialization; a map keeps the
+// candidates in the order of their names.
+std::map<std::string, std::function<BenchProblem()>>& Candidates() {
+  static std::map<std::string, std::function<BenchProblem()>> candidates;
+  return candidates;
 }
+std::map<std::string, std::string>& Unavailable() {
+  static std::map<std::string, std::string> reasons;
+  return reasons;
+}
+
+}  // namespace
+
+namespace detail {
 
 // Gauss–Legendre s = 3 with n steps: the reference for problems without a
 // closed form.
@@ -133,9 +126,24 @@ const std::vector<BenchProblem>& BenchProblems() {
           return detail::GaussReference(problems::Nldnls{}, 10.0, 10000);
         }));
     r.push_back(DampedBenchProblem());
+    for (const auto& candidate : Candidates()) {
+      const std::string& name = candidate.first;
+      if (std::any_of(r.begin(), r.end(),
+                      [&](const BenchProblem& b) { return b.name == name; }))
+        continue;
+      try {
+        r.push_back(candidate.second());
+      } catch (const std::domain_error& e) {
+        Unavailable()[name] = e.what();
+      }
+    }
     return r;
   }();
   return problems;
+}
+
+void AddBenchCandidate(std::string name, std::function<BenchProblem()> make) {
+  Candidates()[std::move(name)] = std::move(make);
 }
 
 const BenchProblem& FindBenchProblem(const std::string& name) {
@@ -145,6 +153,11 @@ const BenchProblem& FindBenchProblem(const std::string& name) {
     valid += valid.empty() ? "" : ", ";
     valid += p.name;
   }
+  const auto why = Unavailable().find(name);
+  if (why != Unavailable().end())
+    throw std::invalid_argument("'" + name +
+                                "' has no Hamiltonian form for the steppers: " +
+                                why->second + "; valid: " + valid);
   throw std::invalid_argument("unknown problem '" + name +
                               "'; valid: " + valid);
 }

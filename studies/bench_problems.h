@@ -8,7 +8,8 @@
 // anharmonic, Kepler); Hénon–Heiles and the NLDNLS use Gauss–Legendre s = 3
 // at a step 4–20× below the finest in the sweeps (stated in `reference`).
 // The damped oscillator is not Hamiltonian, so only the variational solver
-// covers it.
+// covers it. After these, every registered Lagrangian with a Hamiltonian
+// form (AddBenchCandidate), in the order of their names.
 #pragma once
 
 #include <functional>
@@ -46,7 +47,15 @@ void RegisterVariationalMethods();
 // variational solver's four operators only. Part of BenchProblems().
 BenchProblem DampedBenchProblem();
 
-// Throws std::invalid_argument naming the valid problems.
+// A registered Lagrangian (lagrangians/register.h) offered to the bench:
+// `make` builds its bench problem, or throws std::domain_error saying why it
+// has no Hamiltonian form the steppers can use. Called when BenchProblems()
+// is first built; a name the built-in list has is skipped (the built-in
+// problem has more: quadratic invariants, further invariants).
+void AddBenchCandidate(std::string name, std::function<BenchProblem()> make);
+
+// Throws std::invalid_argument naming the valid problems (and, for a
+// registered Lagrangian without a Hamiltonian form, why).
 const BenchProblem& FindBenchProblem(const std::string& name);
 
 // The default sweep of one method: step counts doubling from first_steps (or

@@ -36,6 +36,12 @@ std::string ProblemNameList() {
   return out;
 }
 
+bool HasProblem(const std::string& name) {
+  for (const auto& p : Registry())
+    if (p.name == name) return true;
+  return false;
+}
+
 const NamedProblem& FindProblem(const std::string& name) {
   for (const auto& p : Registry())
     if (p.name == name) return p;

@@ -35,6 +35,8 @@ struct NamedProblem {
   // none; `reference` says which.
   std::function<ExactState(double t)> exact;
   std::string reference;
+  // The canonical momentum ∂L/∂ẋ at (x, ẋ), d components.
+  std::function<std::vector<double>(const double* x, const double* v)> momentum;
 };
 
 // Adds a problem under its name (lagrangians/register.h does, during static
@@ -46,6 +48,7 @@ const std::vector<NamedProblem>& Registry();
 std::string ProblemNameList();
 // Throws std::invalid_argument naming the valid problems.
 const NamedProblem& FindProblem(const std::string& name);
+bool HasProblem(const std::string& name);
 
 // Marches `problem` in windows of `slab_points` and measures like
 // RunConvergence: x_N and (Dx)_N of the last window, and the handed-off

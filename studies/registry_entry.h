@@ -33,21 +33,22 @@ NamedProblem Entry(std::string name, std::string description, P problem,
                                const NodeObserver& observer) {
     return MarchIvp(problem, initial, g, o, observer);
   };
-  e.exact = [problem, exact_fn](double t) {
-    ExactState s = exact_fn(problem, t);
-    if (!s.v.empty()) {
-      // The canonical momentum ∂L/∂ẋ (with a vector potential it is not
-      // M ẋ), the quantity −λ3 approximates (docs/method.md §7).
-      constexpr int d = P::kDim;
-      double z[2 * d];
-      for (int c = 0; c < d; ++c) {
-        z[c] = s.x[c];
-        z[d + c] = s.v[c];
-      }
-      const auto g = ad::Gradient<double, 2 * d>(
-          [&](const auto* y) { return problem(y, y + d); }, z);
-      for (int c = 0; c < d; ++c) s.p.push_back(g.second[d + c]);
+  e.momentum = [problem](const double* x, const double* v) {
+    // ∂L/∂ẋ: with a vector potential it is not Mẋ.
+    constexpr int d = P::kDim;
+    double z[2 * d];
+    for (int c = 0; c < d; ++c) {
+      z[c] = x[c];
+      z[d + c] = v[c];
     }
+    const auto g = ad::Gradient<double, 2 * d>(
+        [&](const auto* y) { return problem(y, y + d); }, z);
+    return std::vector<double>(g.second.data() + d, g.second.data() + 2 * d);
+  };
+  e.exact = [exact_fn, problem, momentum = e.momentum](double t) {
+    ExactState s = exact_fn(problem, t);
+    // The momentum is the quantity −λ3 approximates (docs/method.md §7).
+    if (!s.v.empty()) s.p = momentum(s.x.data(), s.v.data());
     return s;
   };
   return e;

@@ -17,13 +17,10 @@ namespace vivp::steppers {
 
 namespace {
 
-// Bench problems whose variational registry entry has the same Lagrangian,
-// parameters and initial data, with L = ½|ẋ|² − V: the momentum the harness
-// compares is the velocity.
-bool InRegistry(const std::string& problem) {
-  return problem == "anharmonic" || problem == "pendulum" ||
-         problem == "kepler" || problem == "kepler_e09";
-}
+// Bench problems with a variational registry entry of the same name: the
+// built-in anharmonic, pendulum and Kepler problems and every registered
+// Lagrangian (the initial states are compared below).
+bool InRegistry(const std::string& problem) { return HasProblem(problem); }
 
 // A method name: variational_sbpXY (its knob a tolerance, like dopri5's) or
 // variational_sbpXY_uniform (its knob a step count).
@@ -66,8 +63,11 @@ ExternalRun RunVariational(const std::string& method,
   auto same = [](double a, double b) {
     return std::abs(a - b) <= 4e-16 * std::max(std::abs(a), std::abs(b));
   };
+  // The bench's state is (q, p): the registry's (x, ẋ) with p = ∂L/∂ẋ.
+  const std::vector<double> p0 =
+      p.momentum(p.initial.x.data(), p.initial.v.data());
   for (std::size_t c = 0; c < d; ++c)
-    if (!same(y0[c], p.initial.x[c]) || !same(y0[d + c], p.initial.v[c])) {
+    if (!same(y0[c], p.initial.x[c]) || !same(y0[d + c], p0[c])) {
       run.status = "n/a (initial state differs from the registry's)";
       return run;
     }
@@ -77,20 +77,23 @@ ExternalRun RunVariational(const std::string& method,
     return run;
   }
   run.states.reserve(m.t.size());
+  auto state = [&](const double* x, const double* v) {
+    std::vector<double> s(x, x + d);
+    const std::vector<double> momentum = p.momentum(x, v);
+    s.insert(s.end(), momentum.begin(), momentum.end());
+    return s;
+  };
+  std::vector<double> x(d), v(d);
   for (Eigen::Index i = 0; i < Eigen::Index(m.t.size()); ++i) {
-    std::vector<double> s(2 * d);
     for (std::size_t c = 0; c < d; ++c) {
-      s[c] = m.x(i, c);
-      s[d + c] = m.v(i, c);
+      x[c] = m.x(i, c);
+      v[c] = m.v(i, c);
     }
-    run.states.push_back(std::move(s));
+    run.states.push_back(state(x.data(), v.data()));
   }
   // The last node carries the multiplier-corrected state, the one the march
   // hands on (of higher order than x_N).
-  for (std::size_t c = 0; c < d; ++c) {
-    run.states.back()[c] = m.end_position[c];
-    run.states.back()[d + c] = m.end_velocity[c];
-  }
+  run.states.back() = state(m.end_position.data(), m.end_velocity.data());
   run.steps = long(m.points - 1);
   // Residual evaluations: each Newton/chord step of a window costs one
   // pointwise gradient per node, plus the first residual of each window;

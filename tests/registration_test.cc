@@ -2,14 +2,17 @@
 // registration statement in one file (here, this test's), nothing else
 // edited. It is then a problem of `vivp converge` — measured against a
 // reference integration of its Euler–Lagrange equations, since it has no
-// closed form given — and a scene type with its parameter.
+// closed form given — a scene type with its parameter, and a problem of
+// `vivp bench` through its Hamiltonian form.
 #define BOOST_TEST_MODULE registration
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
 #include "lagrangians/register.h"
 #include "scene/run.h"
 #include "scene/scene.h"
+#include "studies/bench_problems.h"
 #include "studies/registry.h"
 
 namespace {
@@ -75,4 +78,53 @@ BOOST_AUTO_TEST_CASE(RegisteredLagrangian_IsASceneTypeWithItsParameters) {
   const auto outcome = vivp::scene::RunScene(s, sink);
   BOOST_TEST(outcome.converged, outcome.status);
   BOOST_TEST(std::abs(sink.last - std::cos(3.0)) < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(
+    RegisteredLagrangian_IsABenchProblemThroughItsLegendreForm) {
+  // L = ½ẋ² − V is separable: the steppers (Störmer–Verlet among them) run
+  // on H = ½p² + V, the variational solver on L, against the reference
+  // integration at t = 10. Orders from two step counts, measured.
+  const auto& b = vivp::steppers::FindBenchProblem("fixture_duffing");
+  auto has = [&](const std::string& m) {
+    return std::find(b.methods.begin(), b.methods.end(), m) != b.methods.end();
+  };
+  BOOST_TEST(has("verlet"));
+  BOOST_TEST(has("gauss2"));
+  BOOST_TEST(has("variational_sbp42_uniform"));
+  BOOST_TEST(b.reference.find("Euler–Lagrange") != std::string::npos);
+  auto order = [&](const std::string& m, long n) {
+    const auto coarse = b.measure(m, double(n), 5);
+    const auto fine = b.measure(m, double(2 * n), 5);
+    BOOST_TEST(coarse.status == "ok", m << ": " << coarse.status);
+    BOOST_TEST(fine.status == "ok", m << ": " << fine.status);
+    BOOST_TEST_MESSAGE(m << " " << n << ": " << coarse.error << " → "
+                         << fine.error << ", max|dH|/H " << fine.energy_error);
+    return std::log2(coarse.error / fine.error);
+  };
+  BOOST_TEST(std::abs(order("verlet", 2000) - 2.0) < 0.1);
+  BOOST_TEST(std::abs(order("gauss2", 500) - 4.0) < 0.2);
+  // SBP42's corrected hand-off: order 4 (docs/method.md §7).
+  BOOST_TEST(std::abs(order("variational_sbp42_uniform", 1000) - 4.0) < 0.3);
+}
+
+BOOST_AUTO_TEST_CASE(RegisteredLagrangian_WithoutAHamiltonianForm_IsNamed) {
+  // The first-order system has a dissipative term and a singular M: the
+  // bench says so instead of listing it.
+  try {
+    vivp::steppers::FindBenchProblem("exponential");
+    BOOST_FAIL("exponential was accepted");
+  } catch (const std::invalid_argument& e) {
+    BOOST_TEST(
+        std::string(e.what()).find("no Hamiltonian form") != std::string::npos,
+        e.what());
+  }
+  // A vector potential makes H non-separable: no Störmer–Verlet.
+  const auto& c = vivp::steppers::FindBenchProblem("cyclotron");
+  const bool verlet = std::find(c.methods.begin(), c.methods.end(), "verlet") !=
+                      c.methods.end();
+  BOOST_TEST(!verlet);
+  const auto w = c.measure("gauss3", 400, 5);
+  BOOST_TEST(w.status == "ok", w.status);
+  BOOST_TEST(w.error < 1e-9, w.error);
 }

@@ -2,6 +2,11 @@
 // problem functor with `template <class T> T Hamiltonian(const T* q,
 // const T* p) const` and `static constexpr int kDim`.
 //
+// A problem may instead supply its own derivatives (ErasedHamiltonian in
+// studies/erased_hamiltonian.h does, to compile the steppers once for many
+// problems): `double Value(const double* y)`, `Gradient(y)` and `Hessian(y)`
+// as Eigen vectors and matrices of size 2d.
+//
 // The gradient comes from one forward pass with ceres::Jet<double, 2d>; the
 // Newton Jacobian J∇²H from nested Eigen AutoDiffScalars, one Hessian column
 // per pass (outer derivative along e_j, inner gradient), so each scalar
@@ -20,6 +25,13 @@
 
 namespace vivp::steppers {
 
+template <class P>
+concept SuppliesDerivatives = requires(const P& p, const double* y) {
+  p.Value(y);
+  p.Gradient(y);
+  p.Hessian(y);
+};
+
 template <class Problem>
 class HamiltonianSystem {
  public:
@@ -33,17 +45,24 @@ class HamiltonianSystem {
   const Problem& problem() const { return problem_; }
 
   double Energy(const Vector& y) const {
-    return problem_.Hamiltonian(y.data(), y.data() + kDim);
+    if constexpr (SuppliesDerivatives<Problem>)
+      return problem_.Value(y.data());
+    else
+      return problem_.Hamiltonian(y.data(), y.data() + kDim);
   }
 
   // ∇H(y) = (∂H/∂q, ∂H/∂p).
   Vector Gradient(const Vector& y) const {
     ++evaluations_;
-    using Jet = ceres::Jet<double, kN>;
-    Jet x[kN];
-    for (int i = 0; i < kN; ++i) x[i] = Jet(y[i], i);
-    const Jet h = problem_.Hamiltonian(x, x + kDim);
-    return h.v;
+    if constexpr (SuppliesDerivatives<Problem>) {
+      return problem_.Gradient(y.data());
+    } else {
+      using Jet = ceres::Jet<double, kN>;
+      Jet x[kN];
+      for (int i = 0; i < kN; ++i) x[i] = Jet(y[i], i);
+      const Jet h = problem_.Hamiltonian(x, x + kDim);
+      return h.v;
+    }
   }
 
   // f(y) = J∇H(y): q̇ = ∂H/∂p, ṗ = −∂H/∂q.
@@ -59,20 +78,24 @@ class HamiltonianSystem {
   // ∇²H(y) column by column (see the header comment).
   Matrix Hessian(const Vector& y) const {
     ++jacobians_;
-    using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, kN, 1>>;
-    using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 1, 1>>;
-    Matrix hess;
-    Outer x[kN];
-    for (int j = 0; j < kN; ++j) {
-      for (int i = 0; i < kN; ++i) {
-        Inner value(y[i], kN, i);
-        Inner seed(i == j ? 1.0 : 0.0, Eigen::Matrix<double, kN, 1>::Zero());
-        x[i] = Outer(value, Eigen::Matrix<Inner, 1, 1>(seed));
+    if constexpr (SuppliesDerivatives<Problem>) {
+      return problem_.Hessian(y.data());
+    } else {
+      using Inner = Eigen::AutoDiffScalar<Eigen::Matrix<double, kN, 1>>;
+      using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, 1, 1>>;
+      Matrix hess;
+      Outer x[kN];
+      for (int j = 0; j < kN; ++j) {
+        for (int i = 0; i < kN; ++i) {
+          Inner value(y[i], kN, i);
+          Inner seed(i == j ? 1.0 : 0.0, Eigen::Matrix<double, kN, 1>::Zero());
+          x[i] = Outer(value, Eigen::Matrix<Inner, 1, 1>(seed));
+        }
+        const Outer h = problem_.Hamiltonian(x, x + kDim);
+        hess.col(j) = h.derivatives()(0).derivatives();
       }
-      const Outer h = problem_.Hamiltonian(x, x + kDim);
-      hess.col(j) = h.derivatives()(0).derivatives();
+      return hess;
     }
-    return hess;
   }
 
   // Df(y) = J∇²H(y).
