@@ -5,10 +5,14 @@
 // closed form given — a scene type with its parameter, and a problem of
 // `vivp bench` through its Hamiltonian form.
 #define BOOST_TEST_MODULE registration
+#include <unistd.h>
+
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <filesystem>
 
+#include "figures/solver_figures.h"
 #include "lagrangians/register.h"
 #include "scene/run.h"
 #include "scene/scene.h"
@@ -127,4 +131,16 @@ BOOST_AUTO_TEST_CASE(RegisteredLagrangian_WithoutAHamiltonianForm_IsNamed) {
   const auto w = c.measure("gauss3", 400, 5);
   BOOST_TEST(w.status == "ok", w.status);
   BOOST_TEST(w.error < 1e-9, w.error);
+}
+
+BOOST_AUTO_TEST_CASE(RegisteredLagrangian_HasTheFigureProgramsFigures) {
+  // fig_problem (target problem_figures) draws these for every registered
+  // Lagrangian; here for the fixture, into a fresh directory.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("vivp_registration_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto png = vivp::figures::OperatorPairConvergenceFigure(
+      dir, "fixture_duffing_convergence", "fixture_duffing", "Duffing");
+  BOOST_TEST(std::filesystem::file_size(png) > 1000u);
+  std::filesystem::remove_all(dir);
 }
