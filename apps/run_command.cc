@@ -155,7 +155,17 @@ Runner AddSceneCommand(CLI::App& app) {
       cmd->add_subcommand("check", "Validate a scene file without solving it");
   check->add_option("file", *file, "scene file (TOML)")->required();
   check->footer(scene::SchemaHelp());
-  return [file] { return CheckScene(*file); };
+  auto table = std::make_shared<bool>(false);
+  CLI::App* effects = cmd->add_subcommand(
+      "effects", "Print the effect catalogue as the README's Markdown table");
+  effects->callback([table] { *table = true; });
+  return [file, table] {
+    if (*table) {
+      std::cout << scene::EffectTableMarkdown();
+      return 0;
+    }
+    return CheckScene(*file);
+  };
 }
 
 }  // namespace vivp::app

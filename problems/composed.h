@@ -24,11 +24,6 @@
 
 namespace vivp::problems {
 
-using Effect = std::variant<effects::Kinetic, effects::Gravity, effects::Spring,
-                            effects::Quartic, effects::Pendulum,
-                            effects::Central, effects::GaussianWell,
-                            effects::Chain, effects::Damping, effects::Growth>;
-
 template <class E>
 concept HasLagrangian = requires(const E& e, const double* p) {
   e.template Lagrangian<1>(p, p);

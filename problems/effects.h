@@ -10,14 +10,18 @@
 // (a term of Galley's Λ in the doubled variables), or both. A Lagrangian term
 // declares what it depends on (kDepends: the position, the velocity or
 // both); the solver differentiates it in those variables only, and calls it
-// with a null pointer for the other argument.
+// with a null pointer for the other argument. Spec() is the effect's name,
+// formula and parameter table (effect_parameters.h), from which the scene
+// catalogue, reader and help are generated.
 #pragma once
 
 #include <cmath>
+#include <variant>
 #include <vector>
 
 #include "core/action/density.h"
 #include "core/autodiff/scalar.h"
+#include "problems/effect_parameters.h"
 
 namespace vivp::problems::effects {
 
@@ -43,6 +47,17 @@ struct Kinetic {
   static constexpr action::Depends kDepends = action::Depends::kVelocity;
   double mass = 1.0;
   std::vector<double> matrix;
+  static EffectSpec<Kinetic> Spec() {
+    using K = ParameterKind;
+    return {"kinetic",
+            "L += ½ m|ẋ|²  (or ½ ẋᵀMẋ with a mass matrix M)",
+            {{"mass", K::kPositive, &Kinetic::mass, "scalar mass m"},
+             {"matrix", K::kMatrix, &Kinetic::matrix,
+              "symmetric positive definite M, dof rows (instead of mass)"}},
+            /*kinetic=*/true,
+            /*first_order=*/false,
+            {"mass", "matrix"}};
+  }
   template <int D, class T>
   T Lagrangian(const T*, const T* v) const {
     if (matrix.empty()) return T(0.5 * mass) * detail::Dot<D>(v, v);
@@ -60,6 +75,14 @@ struct Gravity {
   double mass = 1.0;
   double g = 1.0;
   int axis = -1;  // −1: the last coordinate
+  static EffectSpec<Gravity> Spec() {
+    using K = ParameterKind;
+    return {"gravity",
+            "L −= m g x_axis  (uniform field along −axis)",
+            {{"mass", K::kPositive, &Gravity::mass, "mass m"},
+             {"g", K::kReal, &Gravity::g, "field strength g"},
+             {"axis", K::kAxis, &Gravity::axis, "coordinate index"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     return T(-mass * g) * x[axis < 0 ? D - 1 : axis];
@@ -71,6 +94,13 @@ struct Spring {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double k = 1.0;
   std::vector<double> centre;  // empty: the origin
+  static EffectSpec<Spring> Spec() {
+    using K = ParameterKind;
+    return {"spring",
+            "L −= ½ k|x − c|²",
+            {{"k", K::kNonNegative, &Spring::k, "stiffness k"},
+             {"centre", K::kVector, &Spring::centre, "rest point c"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     if (centre.empty()) return T(-0.5 * k) * detail::Dot<D>(x, x);
@@ -95,6 +125,12 @@ struct Spring {
 struct Quartic {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;
+  static EffectSpec<Quartic> Spec() {
+    return {"quartic",
+            "L −= ¼ κ|x|⁴  (anharmonic, Rothkopf & Nordström 2023, eq. 33)",
+            {{"kappa", ParameterKind::kNonNegative, &Quartic::kappa,
+              "strength κ"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     return RadialLagrangian(detail::Dot<D>(x, x));
@@ -112,6 +148,13 @@ struct Pendulum {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double strength = 1.0;
   int axis = 0;
+  static EffectSpec<Pendulum> Spec() {
+    using K = ParameterKind;
+    return {"pendulum",
+            "L += s cos x_axis  (ẍ = −(s/m) sin x)",
+            {{"strength", K::kPositive, &Pendulum::strength, "s = m g ℓ"},
+             {"axis", K::kAxis, &Pendulum::axis, "angle coordinate"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     using std::cos;
@@ -123,6 +166,11 @@ struct Pendulum {
 struct Central {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double k = 1.0;
+  static EffectSpec<Central> Spec() {
+    return {"central",
+            "L += k/|x|  (Kepler attraction)",
+            {{"k", ParameterKind::kPositive, &Central::k, "strength k"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     return RadialLagrangian(detail::Dot<D>(x, x));
@@ -142,6 +190,12 @@ struct Central {
 struct GaussianWell {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double amplitude = 1.0;
+  static EffectSpec<GaussianWell> Spec() {
+    return {"gaussian_well",
+            "L += a exp(−|x|²/2)  (McLachlan & Offen 2023: ẍ = ∇U)",
+            {{"amplitude", ParameterKind::kReal, &GaussianWell::amplitude,
+              "depth a"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     return RadialLagrangian(detail::Dot<D>(x, x));
@@ -161,6 +215,16 @@ struct Chain {
   double k = 1.0;
   double beta = 0.0;
   bool fixed_ends = true;
+  static EffectSpec<Chain> Spec() {
+    using K = ParameterKind;
+    return {"chain",
+            "L −= Σ_bonds ½ k Δ² + ¼ β Δ⁴, Δ = x_{i+1} − x_i  (FPU; walls "
+            "x_{−1} = x_dof = 0 with fixed_ends)",
+            {{"k", K::kNonNegative, &Chain::k, "bond stiffness k"},
+             {"beta", K::kReal, &Chain::beta, "quartic bond part β"},
+             {"fixed_ends", K::kBool, &Chain::fixed_ends,
+              "bonds to walls at both ends"}}};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     T s = T(0.0);
@@ -182,6 +246,13 @@ struct Chain {
 // Nordström 2023, eq. 40).
 struct Damping {
   double xi = 0.1;
+  static EffectSpec<Damping> Spec() {
+    return {"damping",
+            "Λ = −ξ ẋ₊·x₋  (friction force −ξẋ, Rothkopf & Nordström 2023, "
+            "eq. 40)",
+            {{"xi", ParameterKind::kNonNegative, &Damping::xi,
+              "friction coefficient ξ"}}};
+  }
   template <int D, class T>
   T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
     return T(-0.5 * xi) * detail::PlusDotMinus<D>(x1, v1, x2, v2);
@@ -193,6 +264,14 @@ struct Damping {
 struct Growth {
   static constexpr action::Depends kDepends = action::Depends::kPosition;
   double kappa = 1.0;
+  static EffectSpec<Growth> Spec() {
+    return {"growth",
+            "L −= ½ κ|x|², Λ = ẋ₊·x₋  (first order ẋ = κx, Rothkopf & "
+            "Nordström 2023, eqs. 37–38)",
+            {{"kappa", ParameterKind::kReal, &Growth::kappa, "rate κ"}},
+            /*kinetic=*/false,
+            /*first_order=*/true};
+  }
   template <int D, class T>
   T Lagrangian(const T* x, const T*) const {
     return T(-0.5 * kappa) * detail::Dot<D>(x, x);
@@ -204,3 +283,14 @@ struct Growth {
 };
 
 }  // namespace vivp::problems::effects
+
+namespace vivp::problems {
+
+// Every effect a scene may list, in the catalogue's order: adding an effect
+// is its struct above (terms, Spec()) and its name here.
+using Effect = std::variant<effects::Kinetic, effects::Gravity, effects::Spring,
+                            effects::Quartic, effects::Pendulum,
+                            effects::Central, effects::GaussianWell,
+                            effects::Chain, effects::Damping, effects::Growth>;
+
+}  // namespace vivp::problems

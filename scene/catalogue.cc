@@ -1,7 +1,10 @@
 #include "scene/catalogue.h"
 
+#include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "scene/registered.h"
 
@@ -11,78 +14,84 @@ namespace {
 
 using K = ParameterKind;
 
-EffectType Type(std::string name, std::string formula,
-                std::vector<ParameterSpec> parameters) {
+// The catalogue default of a parameter: its member's initializer.
+template <class E>
+std::vector<double> Fallback(const E& defaults,
+                             const problems::Parameter<E>& p) {
+  return std::visit(
+      [&](auto member) -> std::vector<double> {
+        const auto& value = defaults.*member;
+        using V = std::remove_cvref_t<decltype(value)>;
+        if constexpr (std::is_same_v<V, std::vector<double>>) {
+          if (value.empty() && p.kind == K::kVector) return {0.0};
+          return value;
+        } else {
+          return {double(value)};
+        }
+      },
+      p.member);
+}
+
+template <class E>
+EffectType TypeOf() {
+  const problems::EffectSpec<E> spec = E::Spec();
+  const E defaults{};
   EffectType t;
-  t.name = std::move(name);
-  t.formula = std::move(formula);
-  t.parameters = std::move(parameters);
+  t.name = spec.name;
+  t.formula = spec.formula;
+  for (const auto& p : spec.parameters)
+    t.parameters.push_back({p.name, p.kind, Fallback(defaults, p), p.meaning});
+  t.dissipative = problems::HasLambdaTerm<E>;
+  t.kinetic = spec.kinetic;
+  t.first_order = spec.first_order;
+  t.exclusive = spec.exclusive;
   return t;
 }
 
-std::vector<EffectType> BuiltIn() {
-  std::vector<EffectType> t;
-  t.push_back(Type("kinetic", "L += ½ m|ẋ|²  (or ½ ẋᵀMẋ with a mass matrix M)",
-                   {{"mass", K::kPositive, {1.0}, "scalar mass m"},
-                    {"matrix",
-                     K::kMatrix,
-                     {},
-                     "symmetric positive definite M, dof rows (instead of "
-                     "mass)"}}));
-  t.back().kinetic = true;
-  t.back().exclusive = {"mass", "matrix"};
-  t.push_back(
-      Type("gravity", "L −= m g x_axis  (uniform field along −axis)",
-           {{"mass", K::kPositive, {1.0}, "mass m"},
-            {"g", K::kReal, {1.0}, "field strength g"},
-            {"axis", K::kAxis, {-1.0}, "coordinate index (default: last)"}}));
-  t.push_back(Type("spring", "L −= ½ k|x − c|²",
-                   {{"k", K::kNonNegative, {1.0}, "stiffness k"},
-                    {"centre", K::kVector, {0.0}, "rest point c"}}));
-  t.push_back(Type("quartic",
-                   "L −= ¼ κ|x|⁴  (anharmonic, Rothkopf & Nordström 2023, "
-                   "eq. 33)",
-                   {{"kappa", K::kNonNegative, {1.0}, "strength κ"}}));
-  t.push_back(Type("pendulum", "L += s cos x_axis  (ẍ = −(s/m) sin x)",
-                   {{"strength", K::kPositive, {1.0}, "s = m g ℓ"},
-                    {"axis", K::kAxis, {0.0}, "angle coordinate"}}));
-  t.push_back(Type("central", "L += k/|x|  (Kepler attraction)",
-                   {{"k", K::kPositive, {1.0}, "strength k"}}));
-  t.push_back(Type("gaussian_well",
-                   "L += a exp(−|x|²/2)  (McLachlan & Offen 2023: ẍ = ∇U)",
-                   {{"amplitude", K::kReal, {1.0}, "depth a"}}));
-  t.push_back(
-      Type("chain",
-           "L −= Σ_bonds ½ k Δ² + ¼ β Δ⁴, Δ = x_{i+1} − x_i  (FPU; "
-           "walls x_{−1} = x_dof = 0 with fixed_ends)",
-           {{"k", K::kNonNegative, {1.0}, "bond stiffness k"},
-            {"beta", K::kReal, {0.0}, "quartic bond part β"},
-            {"fixed_ends", K::kBool, {1.0}, "bonds to walls at both ends"}}));
-  t.push_back(Type("damping",
-                   "Λ = −ξ ẋ₊·x₋  (friction force −ξẋ, Rothkopf & "
-                   "Nordström 2023, eq. 40)",
-                   {{"xi", K::kNonNegative, {0.1}, "friction coefficient ξ"}}));
-  t.back().dissipative = true;
-  t.push_back(Type("growth",
-                   "L −= ½ κ|x|², Λ = ẋ₊·x₋  (first order ẋ = κx, "
-                   "Rothkopf & Nordström 2023, eqs. 37–38)",
-                   {{"kappa", K::kReal, {1.0}, "rate κ"}}));
-  t.back().dissipative = true;
-  t.back().first_order = true;
-  return t;
+// The effect struct with the values read (every parameter with a default is
+// present; an optional one only when given).
+template <class E>
+problems::Effect Build(const ParameterValues& values) {
+  E e{};
+  for (const auto& p : E::Spec().parameters) {
+    const auto it = values.find(p.name);
+    if (it == values.end()) continue;
+    std::visit(
+        [&](auto member) {
+          auto& field = e.*member;
+          using V = std::remove_cvref_t<decltype(field)>;
+          if constexpr (std::is_same_v<V, std::vector<double>>)
+            field = it->second;
+          else if constexpr (std::is_same_v<V, bool>)
+            field = it->second.at(0) != 0;
+          else
+            field = V(it->second.at(0));
+        },
+        p.member);
+  }
+  return e;
 }
 
-double Get(const ParameterValues& v, const std::string& name) {
-  return v.at(name).at(0);
+// Calls f.template operator()<E>() for every alternative E of Effect.
+template <class F>
+void ForEachEffect(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (f.template operator()<std::variant_alternative_t<I, problems::Effect>>(),
+     ...);
+  }
+  (std::make_index_sequence<std::variant_size_v<problems::Effect>>{});
 }
 
 }  // namespace
 
 const std::vector<EffectType>& BuiltInEffects() {
-  static const std::vector<EffectType> built_in = BuiltIn();
+  static const std::vector<EffectType> built_in = [] {
+    std::vector<EffectType> t;
+    ForEachEffect([&]<class E>() { t.push_back(TypeOf<E>()); });
+    return t;
+  }();
   return built_in;
 }
-
 // Built once, at first use after static initialization, when every
 // registration is in.
 const std::vector<EffectType>& EffectCatalogue() {
@@ -130,26 +139,13 @@ std::string DescribeKind(ParameterKind kind, int dof) {
 }
 
 problems::Effect MakeEffect(const EffectType& type, const ParameterValues& v) {
-  namespace e = problems::effects;
-  const std::string& n = type.name;
-  if (n == "kinetic") {
-    e::Kinetic k{Get(v, "mass"), {}};
-    if (auto it = v.find("matrix"); it != v.end()) k.matrix = it->second;
-    return k;
-  }
-  if (n == "gravity")
-    return e::Gravity{Get(v, "mass"), Get(v, "g"), int(Get(v, "axis"))};
-  if (n == "spring") return e::Spring{Get(v, "k"), v.at("centre")};
-  if (n == "quartic") return e::Quartic{Get(v, "kappa")};
-  if (n == "pendulum")
-    return e::Pendulum{Get(v, "strength"), int(Get(v, "axis"))};
-  if (n == "central") return e::Central{Get(v, "k")};
-  if (n == "gaussian_well") return e::GaussianWell{Get(v, "amplitude")};
-  if (n == "chain")
-    return e::Chain{Get(v, "k"), Get(v, "beta"), Get(v, "fixed_ends") != 0};
-  if (n == "damping") return e::Damping{Get(v, "xi")};
-  if (n == "growth") return e::Growth{Get(v, "kappa")};
-  throw std::logic_error("effect '" + n + "' has no built-in effect struct");
+  std::optional<problems::Effect> made;
+  ForEachEffect([&]<class E>() {
+    if (!made && E::Spec().name == type.name) made = Build<E>(v);
+  });
+  if (!made)
+    throw std::logic_error("effect '" + type.name +
+                           "' has no built-in effect struct");
+  return *made;
 }
-
 }  // namespace vivp::scene

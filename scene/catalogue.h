@@ -1,8 +1,10 @@
 // The effects a scene may list (README "Effects"), by name: each with its
 // formula, its parameters (kind, default, meaning) and a builder for the effect
-// struct of problems/effects.h. The scene reader checks a scene against this
-// table, `vivp run --help` and the README print it, and a C++ Lagrangian
-// registered in lagrangians/ (registered.h) joins it as one more effect type.
+// struct of problems/effects.h — all generated from the effects' own tables
+// (Spec(), problems/effect_parameters.h). The scene reader checks a scene
+// against this table, `vivp run --help` and the README print it, and a C++
+// Lagrangian registered in lagrangians/ (registered.h) joins it as one more
+// effect type.
 #pragma once
 
 #include <map>
@@ -13,15 +15,7 @@
 
 namespace vivp::scene {
 
-enum class ParameterKind {
-  kReal,         // any finite number
-  kPositive,     // finite, > 0
-  kNonNegative,  // finite, >= 0
-  kVector,       // dof finite numbers
-  kMatrix,       // dof x dof finite numbers, symmetric positive definite
-  kBool,
-  kAxis,  // a coordinate index 0 … dof−1
-};
+using ParameterKind = problems::ParameterKind;
 
 struct ParameterSpec {
   std::string name;
@@ -48,7 +42,8 @@ struct EffectType {
   std::vector<std::string> exclusive;
 };
 
-// The effects vivp ships, without the registered Lagrangians.
+// The effects vivp ships (problems::Effect), without the registered
+// Lagrangians.
 const std::vector<EffectType>& BuiltInEffects();
 const std::vector<EffectType>& EffectCatalogue();
 // nullptr when no effect has that name.

@@ -22,6 +22,14 @@ std::vector<std::string> Types(const Scene& s) {
 
 double Value(const Scene& s, const std::string& type,
              const std::string& parameter) {
+  // The closed forms read the effects' declared parameters (Spec(),
+  // problems/effects.h); a name they do not declare is a bug here.
+  const EffectType* declared = FindEffectType(type);
+  if (!declared ||
+      std::none_of(declared->parameters.begin(), declared->parameters.end(),
+                   [&](const ParameterSpec& p) { return p.name == parameter; }))
+    throw std::logic_error("a closed-form reference reads '" + type + "." +
+                           parameter + "', which no effect declares");
   for (const auto& e : s.effects)
     if (e.type->name == type) return e.values.at(parameter).at(0);
   return 0;

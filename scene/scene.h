@@ -106,4 +106,10 @@ const std::vector<std::string>& ReferenceNames();
 // `vivp run --help`.
 std::string SchemaHelp();
 
+// The effect catalogue as the README's Markdown table (type, term,
+// parameters with defaults), between the README's "effects table" markers:
+// `vivp scene effects` prints it, scripts/update_readme_effects.sh puts it
+// into the README, and a test checks that the README has it.
+std::string EffectTableMarkdown();
+
 }  // namespace vivp::scene

@@ -66,4 +66,47 @@ std::string SchemaHelp() {
   return h.str();
 }
 
+namespace {
+
+// A parameter's default as the README writes it.
+std::string MarkdownDefault(const ParameterSpec& p) {
+  if (p.fallback.empty()) return "optional";
+  switch (p.kind) {
+    case ParameterKind::kBool:
+      return p.fallback[0] != 0 ? "true" : "false";
+    case ParameterKind::kAxis:
+      return p.fallback[0] < 0 ? "last coordinate"
+                               : detail::FormatNumber(p.fallback[0]);
+    case ParameterKind::kVector:
+      return detail::FormatNumber(p.fallback[0]) + " in each coordinate";
+    default:
+      return detail::FormatNumber(p.fallback[0]);
+  }
+}
+
+// "|" would end a table cell.
+std::string Cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+std::string EffectTableMarkdown() {
+  std::ostringstream m;
+  m << "| type | term | parameters (default) |\n|---|---|---|\n";
+  for (const auto& t : EffectCatalogue()) {
+    m << "| `" << t.name << "` | " << Cell(t.formula) << " | ";
+    for (std::size_t i = 0; i < t.parameters.size(); ++i) {
+      const auto& p = t.parameters[i];
+      m << (i ? ", " : "") << "`" << p.name << "` " << Cell(p.meaning) << " ("
+        << MarkdownDefault(p) << ")";
+    }
+    if (t.dof > 0) m << " — a registered C++ Lagrangian, dof = " << t.dof;
+    m << " |\n";
+  }
+  return m.str();
+}
+
 }  // namespace vivp::scene
