@@ -11,6 +11,7 @@
 
 #include "apps/command.h"
 #include "core/sbp/builder.h"
+#include "solvers/variational/solver_choice.h"
 #include "studies/registry.h"
 
 namespace vivp::app {
@@ -63,20 +64,34 @@ nlohmann::json OrdersJson(const ConvergenceOrders& o) {
           {"p_corrected", JsonNumber(o.p_corrected)}};
 }
 
-Path ParseSolver(const std::string& s) {
-  if (s == "newton") return Path::kReducedNewton;
-  if (s == "full-newton") return Path::kFullNewton;
-  if (s == "ceres-lm") return Path::kCeresLm;
-  throw UsageError("--solver: '" + s +
-                   "' is not a solver; valid: newton, full-newton, ceres-lm");
-}
-
 // The solver of --solver and its options.
 SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
   SolveOptions options;
-  options.path = ParseSolver(o.solver);
+  try {
+    options.path = ParseSolver(o.solver);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--solver: ") + e.what());
+  }
   options.extended_residual = o.extended_residual;
   return options;
+}
+
+// The options with the window resolved: --slab-points as given, or the
+// solver's default (Ceres LM marches unless --slab-points 0; a tolerance
+// marches in 48 for Newton). An impossible combination is the user's error,
+// refused before any work.
+ConvergeOptions Resolved(const ConvergeOptions& o, const SolveOptions& solve) {
+  const SolveRequest request{
+      .path = solve.path,
+      .op = o.op,
+      .window_points = o.slab_points_given ? o.slab_points : -1,
+      .tolerance = !o.tolerances.empty(),
+      .extended_residual = solve.extended_residual};
+  const Refusal refusal = CheckSolveRequest(request);
+  if (!refusal.ok()) throw UsageError(refusal.Sentence());
+  ConvergeOptions r = o;
+  r.slab_points = WindowPoints(request);
+  return r;
 }
 
 // The grid sizes of --points. Every grid is checked before any work, so
@@ -89,7 +104,7 @@ std::vector<long long> CheckedGridSizes(const ConvergeOptions& o) {
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--points: ") + e.what());
     }
-    if (o.slab_points > n)
+    if (o.slab_points_given && o.slab_points > n)
       throw UsageError("--slab-points " + std::to_string(o.slab_points) +
                        " exceeds the grid of " + std::to_string(n) +
                        " points; use --slab-points <= " + std::to_string(n));
@@ -106,6 +121,9 @@ bool PrintConvergenceTable(std::ostream& human, const ConvergeOptions& o,
         << ", solver " << o.solver << ", t_end = " << o.t_end;
   if (o.slab_points > 0)
     human << ", marching in windows of " << o.slab_points << " points";
+  if (o.slab_points > 0 && !o.slab_points_given)
+    human << " (the default of " << o.solver
+          << "; --slab-points 0 for one global solve)";
   human << "\n";
   PrintReference(human, problem);
   human << std::setw(7) << "Nt" << std::setw(11) << "dt" << std::setw(11)
@@ -190,18 +208,15 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
   return j;
 }
 
-int RunConverge(const ConvergeOptions& o) {
-  if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
-  const NamedProblem& problem = FindProblem(o.problem);
-  const SolveOptions options = ConvergeSolveOptions(o);
+int RunConverge(const ConvergeOptions& given) {
+  if (!given.json.empty() && given.json != "-")
+    CheckOutputFile(given.json, given.force);
+  const NamedProblem& problem = FindProblem(given.problem);
+  const SolveOptions options = ConvergeSolveOptions(given);
+  const ConvergeOptions o = Resolved(given, options);
   Grid grid;
   grid.op = o.op;
   grid.t_end = o.t_end;
-  if (options.path == Path::kCeresLm &&
-      (o.slab_points > 0 || !o.tolerances.empty()))
-    throw UsageError(
-        "--solver ceres-lm solves globally and cannot march; use --solver "
-        "newton with --slab-points or --tolerance");
   if (!o.tolerances.empty())
     return RunToleranceConverge(o, problem, grid, options);
   const std::vector<long long> points = CheckedGridSizes(o);
@@ -244,21 +259,27 @@ Runner AddConvergeCommand(CLI::App& app) {
                   "per tolerance; marches in windows of --slab-points "
                   "(default 48)")
       ->excludes(points);
-  cmd->add_option("--solver", o->solver, "newton | full-newton | ceres-lm")
+  cmd->add_option("--solver", o->solver,
+                  "newton | full-newton | ceres-lm (Ceres LM marches in "
+                  "windows by default: --slab-points)")
       ->capture_default_str();
   cmd->add_option("--t-end", o->t_end, "end time (start is 0)")
       ->check(FiniteNumber())
       ->capture_default_str();
   cmd->add_option("--json", o->json, "write the study as JSON (- for stdout)");
   cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
-  cmd->add_option("--slab-points", o->slab_points,
-                  "march in windows of this many points (0: one global "
-                  "solve)")
-      ->check(WholeNumberAtLeast(0, ">= 0 (0: one global solve)"))
-      ->capture_default_str();
+  CLI::Option* slab =
+      cmd->add_option("--slab-points", o->slab_points,
+                      "march in windows of this many points (0: one global "
+                      "solve; default 0 for Newton, for ceres-lm its "
+                      "measured window per operator)")
+          ->check(WholeNumberAtLeast(0, ">= 0 (0: one global solve)"));
   cmd->add_flag("--extended-residual", o->extended_residual,
                 "reduced Newton: refinement residual in long double");
-  return [o] { return RunConverge(*o); };
+  return [o, slab] {
+    o->slab_points_given = slab->count() > 0;
+    return RunConverge(*o);
+  };
 }
 
 }  // namespace vivp::app

@@ -21,6 +21,7 @@ struct ConvergeOptions {
   bool force = false;
   bool extended_residual = false;
   long long slab_points = 0;
+  bool slab_points_given = false;  // --slab-points on the command line
 };
 
 // A line naming what the errors are measured against when the problem has

@@ -130,7 +130,8 @@ nlohmann::json ToleranceStudyJson(const ConvergeOptions& o,
 int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
                          const Grid& grid, const SolveOptions& options) {
   const std::vector<double> tolerances = ParseTolerances(o.tolerances);
-  const long long window = o.slab_points > 0 ? o.slab_points : 48;
+  // Resolved by the caller: the window given, or the solver's default.
+  const long long window = o.slab_points;
   const ConvergenceStudy study =
       RunToleranceStudy(problem, grid, tolerances, options, window);
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;

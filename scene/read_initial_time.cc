@@ -88,11 +88,19 @@ void ReadTime(const TomlReader& r, const toml::table& root, Scene& s) {
                (global ? " for one global solve" : ""),
            "expected at most " + std::to_string(maximum) +
                (global ? " (or march: [method] slab_points = 48)" : ""));
-  if (s.method.slab_points > s.points)
-    r.Fail(*root.get("method")->as_table()->get("slab_points"),
+  if (s.method.slab_points > s.points) {
+    const toml::table* method = root["method"].as_table();
+    const toml::node* slab = method ? method->get("slab_points") : nullptr;
+    // A default window (ceres-lm's) longer than the grid: one window.
+    if (!slab) {
+      s.method.slab_points = s.points;
+      return;
+    }
+    r.Fail(*slab,
            "slab_points = " + std::to_string(s.method.slab_points) +
                " exceeds points = " + std::to_string(s.points),
            "expected slab_points <= points");
+  }
 }
 
 }  // namespace vivp::scene::detail

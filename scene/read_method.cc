@@ -4,14 +4,14 @@
 #include "scene/run.h"
 #include "scene/sections.h"
 #include "scene/text.h"
+#include "solvers/variational/solver_choice.h"
 
 namespace vivp::scene::detail {
 
 namespace {
 
 // tolerance = 1e-6 (absolute and relative) or {absolute = …, relative = …}.
-void ReadTolerance(const TomlReader& r, const toml::table& method,
-                   const toml::node& n, Scene& s) {
+void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
   const std::string expected =
       "expected tolerance = 1e-6 (absolute and relative) or tolerance = "
       "{absolute = 1e-8, relative = 1e-6}, numbers in [0, 1) with at least "
@@ -42,19 +42,26 @@ void ReadTolerance(const TomlReader& r, const toml::table& method,
                " is beyond double precision",
            "expected a relative tolerance of at least 1e-14 (or 0 with an "
            "absolute one)");
-  if (s.method.solver == "ceres-lm")
-    r.Fail(n, "solver = \"ceres-lm\" solves globally and cannot march",
-           "expected no tolerance, or solver = \"newton\"");
-  if (const toml::node* w = method.get("slab_points");
-      w && s.method.slab_points == 0)
-    r.Fail(*w,
-           "slab_points = 0 asks for one global solve, but a tolerance "
-           "marches in windows",
-           "expected slab_points >= " +
-               std::to_string(sbp::Table(s.method.op).min_points) +
-               " or no slab_points (48)");
-  if (s.method.slab_points == 0) s.method.slab_points = 48;
   s.method.tolerance = tol;
+}
+
+// The combination of solver, windows and tolerance, checked where the
+// command line checks it (solver_choice.h), and the window it marches in:
+// slab_points as given, else the solver's default (Ceres LM marches; a
+// tolerance marches in 48 for Newton), else 0 for one global solve.
+void ResolveWindow(const TomlReader& r, const toml::table& method, Scene& s) {
+  const toml::node* slab = method.get("slab_points");
+  const SolveRequest request{.path = ParseSolver(s.method.solver),
+                             .op = s.method.op,
+                             .window_points = slab ? s.method.slab_points : -1,
+                             .tolerance = s.method.tolerance.enabled()};
+  const Refusal refusal = CheckSolveRequest(request, Spelling::kScene);
+  // At the window when it is given, else at the solver that has no
+  // default window.
+  const toml::node* at = slab ? slab : method.get("solver");
+  if (!refusal.ok())
+    r.Fail(at ? *at : *method.get("tolerance"), refusal.what, refusal.expected);
+  s.method.slab_points = WindowPoints(request);
 }
 
 }  // namespace
@@ -82,26 +89,15 @@ void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s) {
   if (const toml::node* n = t.get("operator"))
     s.method.op = r.Choice(*n, "operator", ops);
   if (const toml::node* n = t.get("solver"))
-    s.method.solver =
-        r.Choice(*n, "solver", {"newton", "full-newton", "ceres-lm"});
-  if (const toml::node* n = t.get("slab_points")) {
-    const long long minimum = sbp::Table(s.method.op).min_points;
+    s.method.solver = r.Choice(*n, "solver", SolverNames());
+  if (const toml::node* n = t.get("slab_points"))
     s.method.slab_points =
         r.Whole(*n, "slab_points", 0,
-                "0 (one global solve) or at least " + std::to_string(minimum) +
+                "0 (one global solve) or at least " +
+                    std::to_string(sbp::Table(s.method.op).min_points) +
                     " for " + s.method.op);
-    if (s.method.slab_points > 0 && s.method.slab_points < minimum)
-      r.Fail(*n,
-             "slab_points = " + std::to_string(s.method.slab_points) +
-                 " is below the minimum of " + std::to_string(minimum) +
-                 " for " + s.method.op,
-             "expected 0 (one global solve) or at least " +
-                 std::to_string(minimum));
-    if (s.method.slab_points > 0 && s.method.solver == "ceres-lm")
-      r.Fail(*n, "solver = \"ceres-lm\" solves globally and cannot march",
-             "expected slab_points = 0, or solver = \"newton\"");
-  }
-  if (const toml::node* n = t.get("tolerance")) ReadTolerance(r, t, *n, s);
+  if (const toml::node* n = t.get("tolerance")) ReadTolerance(r, *n, s);
+  ResolveWindow(r, t, s);
 }
 
 }  // namespace vivp::scene::detail

@@ -14,9 +14,7 @@
 #include "scene/run.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
-#include "solvers/variational/ceres_lm.h"
-#include "solvers/variational/march.h"
-#include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/solve.h"
 
 namespace vivp::scene::detail {
 
@@ -181,12 +179,6 @@ class NodeEmitter {
   double energy_ = 0;
 };
 
-inline Path SolverPath(const std::string& name) {
-  if (name == "full-newton") return Path::kFullNewton;
-  if (name == "ceres-lm") return Path::kCeresLm;
-  return Path::kReducedNewton;
-}
-
 // One global solve of the whole span: the nodes go to `emit` afterwards.
 template <class P>
 void SolveGlobal(const P& problem, const Scene& s, const InitialData& initial,
@@ -195,11 +187,8 @@ void SolveGlobal(const P& problem, const Scene& s, const InitialData& initial,
   nlohmann::json& j = out.solver;
   const auto start = Clock::now();
   SolveOptions options;
-  options.path = SolverPath(s.method.solver);
-  const IvpSolution<double> sol =
-      options.path == Path::kCeresLm
-          ? SolveIvpCeres(problem, initial, grid, options)
-          : SolveIvp(problem, initial, grid, options);
+  options.path = ParseSolver(s.method.solver);
+  const IvpSolution<double> sol = Solve(problem, initial, grid, options);
   out.seconds = Since(start);
   out.converged = sol.status.converged;
   out.status = sol.status.converged ? "converged" : sol.status.reason;
@@ -245,14 +234,13 @@ void SolveMarched(const P& problem, const Scene& s, const InitialData& initial,
   long long index = 0;
   double output_seconds = 0;
   const double span = s.t_end - s.t_start;
-  const MarchResult r =
-      MarchIvp(problem, initial, grid, options,
-               [&](double t, const double* x, const double* v) {
-                 const auto t0 = Clock::now();
-                 emit.Node(index++, t, x, v);
-                 sink.Progress((t - s.t_start) / span);
-                 output_seconds += Since(t0);
-               });
+  const MarchResult r = Solve(problem, initial, grid, options,
+                              [&](double t, const double* x, const double* v) {
+                                const auto t0 = Clock::now();
+                                emit.Node(index++, t, x, v);
+                                sink.Progress((t - s.t_start) / span);
+                                output_seconds += Since(t0);
+                              });
   out.seconds = Since(start) - output_seconds;
   RecordMarch(r, options, out);
 }

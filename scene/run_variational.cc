@@ -11,7 +11,7 @@ MarchOptions MarchOptionsFor(const Scene& s) {
   MarchOptions options;
   options.window_points = s.method.slab_points;
   options.keep_trajectory = false;
-  options.solve.path = SolverPath(s.method.solver);
+  options.solve.path = ParseSolver(s.method.solver);
   options.tolerance = s.method.tolerance;
   return options;
 }

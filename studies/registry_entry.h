@@ -6,10 +6,8 @@
 #include <memory>
 
 #include "problems/phase_space.h"
-#include "solvers/variational/ceres_lm.h"
-#include "solvers/variational/march.h"
 #include "solvers/variational/ode_reference.h"
-#include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/solve.h"
 #include "studies/registry.h"
 
 namespace vivp {
@@ -26,12 +24,11 @@ NamedProblem Entry(std::string name, std::string description, P problem,
   e.initial = initial;
   e.reference = std::move(reference);
   e.solve = [problem, initial](const Grid& g, const SolveOptions& o) {
-    if (o.path == Path::kCeresLm) return SolveIvpCeres(problem, initial, g, o);
-    return SolveIvp(problem, initial, g, o);
+    return Solve(problem, initial, g, o);
   };
   e.march = [problem, initial](const Grid& g, const MarchOptions& o,
                                const NodeObserver& observer) {
-    return MarchIvp(problem, initial, g, o, observer);
+    return Solve(problem, initial, g, o, observer);
   };
   e.momentum = [problem](const double* x, const double* v) {
     // ∂L/∂ẋ: with a vector potential it is not Mẋ.

@@ -295,12 +295,20 @@ BOOST_AUTO_TEST_CASE(BadInput_RegisteredLagrangianWithTheWrongDof) {
              "has 2 degrees of freedom; expected dof = 2");
 }
 
-BOOST_AUTO_TEST_CASE(BadInput_MarchingWithCeres) {
-  BOOST_TEST(
-      ErrorOf(With(
-          0, "", {"[method]", "solver = \"ceres-lm\"", "slab_points = 32"})) ==
-      "bad.toml:21:15: solver = \"ceres-lm\" solves globally and cannot "
-      "march; expected slab_points = 0, or solver = \"newton\"");
+BOOST_AUTO_TEST_CASE(CeresLm_MarchesInItsWindowUnlessSlabPointsSays) {
+  const Scene given = ParseScene(
+      With(0, "", {"[method]", "solver = \"ceres-lm\"", "slab_points = 32"}),
+      "a.toml");
+  BOOST_TEST(given.method.slab_points == 32);
+  const Scene global = ParseScene(
+      With(0, "", {"[method]", "solver = \"ceres-lm\"", "slab_points = 0"}),
+      "b.toml");
+  BOOST_TEST(global.method.slab_points == 0);
+  // The default window (sbp42: 128) is longer than the 101 points: one.
+  const Scene fallback =
+      ParseScene(With(0, "", {"[method]", "solver = \"ceres-lm\""}), "c.toml");
+  BOOST_TEST(fallback.method.slab_points == 101);
+  // SBP84 has none (tests/lm_march_test.cc).
 }
 
 BOOST_AUTO_TEST_CASE(BadInput_TooManyPointsForAGlobalSolve) {
@@ -360,18 +368,18 @@ BOOST_AUTO_TEST_CASE(BadInput_Tolerance) {
   BOOST_TEST(
       ErrorOf(
           With(18, "", {"[method]", "slab_points = 0", "tolerance = 1e-6"})) ==
-      "bad.toml:20:15: slab_points = 0 asks for one global solve, but "
-      "a tolerance marches in windows; expected slab_points >= 8 or no "
+      "bad.toml:20:15: a tolerance marches in windows, but slab_points = 0 "
+      "asks for one global solve; expected slab_points >= 8 or no "
       "slab_points (48)");
   BOOST_TEST(ErrorOf(With(
                  18, "", {"[method]", "kind = \"rk4\"", "tolerance = 1e-6"})) ==
              "bad.toml:21:13: 'tolerance' applies to kind = \"variational\" "
              "only; expected no 'tolerance' for the stepper 'rk4'");
-  BOOST_TEST(
-      ErrorOf(With(
-          18, "", {"[method]", "solver = \"ceres-lm\"", "tolerance = 1e-6"})) ==
-      "bad.toml:21:13: solver = \"ceres-lm\" solves globally and "
-      "cannot march; expected no tolerance, or solver = \"newton\"");
+  BOOST_TEST(ParseScene(With(18, "",
+                             {"[method]", "solver = \"ceres-lm\"",
+                              "tolerance = 1e-6"}),
+                        "lm.toml")
+                 .method.slab_points == 128);
 }
 
 BOOST_AUTO_TEST_CASE(BadInput_EveryMessageHasTheFileLineColumnForm) {

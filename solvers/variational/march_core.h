@@ -46,9 +46,11 @@ class MarchCore {
                               uniform);
     out_.predictor_steps += a.predictor_steps;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
-    if (!fresh && a.failure == WindowFailure::kNewton) {
+    if (!fresh && a.failure == WindowFailure::kNewton &&
+        solver_.ReusesFactorizations()) {
       // Chord steps on an earlier window's factorization did not converge:
-      // once more with a Jacobian of this window's own.
+      // once more with a Jacobian of this window's own. (A solver that
+      // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
       return Solve(state, points, dt, true, predictor, uniform);
     }

@@ -13,7 +13,8 @@
 //       initial-data rows (x₊, λ3, λ4; docs/method.md §5);
 //   Path::kFullNewton  Newton on the full ∇S = 0 (x1, x2, λ1..λ4), for
 //       cross-checking.
-// (Levenberg–Marquardt through Ceres: solvers/variational/ceres_lm.h.)
+// (Levenberg–Marquardt through Ceres: solvers/variational/ceres_lm.h; every
+// path, global or marched, behind one call: solvers/variational/solve.h.)
 // Both are O(Nt) per iteration: pointwise AD through the stencil, a banded
 // Jacobian, banded LU, matrix-free residuals for the refinement steps.
 //
@@ -317,8 +318,8 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
     report = solvers::Newton(full, u, options.newton);
   } else {
     throw std::invalid_argument(
-        "SolveIvp runs the Newton paths; Levenberg-Marquardt is SolveIvpCeres "
-        "(solvers/variational/ceres_lm.h)");
+        "SolveIvp runs the Newton paths; vivp::Solve "
+        "(solvers/variational/solve.h) runs Levenberg-Marquardt too");
   }
   IvpSolution<Real> s =
       detail::Finish(problem, prep.dbar, full, u, report, options.path);

@@ -1,5 +1,7 @@
 // One window of a time-slab march (march.h), solved and checked: the
-// predictor's path is the Newton start, and the converged window is accepted
+// predictor's path is the start of the window's solver (reduced Newton on a
+// kept engine, full Newton, or Ceres LM: a window is small enough for LM's
+// normal equations, docs/method.md §8), and the converged window is accepted
 // only if an independent integration agrees with it.
 //
 // The checks are those of window_checks.h.
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/predictor.h"
 #include "solvers/variational/window_checks.h"
@@ -103,6 +106,10 @@ class WindowSolver {
     return Failed(a, failure, why);
   }
 
+  // Whether a window starts from an earlier window's factorization (the
+  // reduced Newton engine), so that solving it again afresh can help.
+  bool ReusesFactorizations() const { return EngineApplies(); }
+
   long long factorizations() const {
     long long n = 0;
     for (const auto& e : engines_) n += e->factorizations();
@@ -115,62 +122,73 @@ class WindowSolver {
            !options_.solve.extended_residual;
   }
 
-  // Newton from the predictor's path; false (with `a` failed) if it did not
-  // converge.
+  // The window from the predictor's path, by the path of options.solve;
+  // false (with `a` failed) if it did not converge.
   bool SolveNewton(Attempt& a, const InitialData& initial, const State& x0,
                    const State& v0, bool fresh, bool nodes) {
-    const int n = a.points;
     last_engine_ = nullptr;
-    if (EngineApplies()) {
-      WindowEngine<P>& e = Engine(n, a.dt);
-      last_engine_ = &e;
-      solvers::NewtonOptions newton = options_.solve.newton;
-      newton.phase_timings = false;
-      newton.final_residual = false;
-      // A march hands each window's round-off to the next, and an
-      // oscillation amplifies it: with the global solve's stop at 32 ε an
-      // SBP84 march of the anharmonic oscillator (4096 steps to t = 10) ended
-      // 1.3e-11 off in the velocity, at 4 ε 1.7e-13, for 10 % more
-      // corrections. Round-off that stops the corrections short of 4 ε is
-      // recognised as stagnation (newton.h).
-      if (newton.step_tolerance == 0)
-        newton.step_tolerance = 4 * std::numeric_limits<double>::epsilon();
-      const State lambda3 = Lambda3Start(n);
-      const auto o =
-          e.Solve(x0, v0, px_.data(), lambda3.data(), newton, fresh, nodes);
-      a.iterations = o.report.iterations;
-      a.corrections = o.report.corrections;
-      if (!o.failure.empty()) {
-        a.residual = o.report.residual_norm;
-        Failed(a,
-               o.split_helps ? WindowFailure::kNewton
-                             : WindowFailure::kUnderResolved,
-               o.failure);
-        return false;
-      }
-      a.end = o.end;
-      a.x_end = o.x_end;
-      a.v_end = o.v_end;
-      a.est_x = o.est_x;
-      a.est_v = o.est_v;
-      a.roundoff_v = o.roundoff_v;
-      for (int i = 0; i < n; ++i)
-        for (int c = 0; c < d; ++c)
-          a.deviation =
-              std::max(a.deviation, std::abs(e.x(i, c) - px_[i * d + c]));
-      if (nodes) {
-        a.x.resize(std::size_t(n) * d);
-        a.v.resize(std::size_t(n) * d);
-        for (int i = 0; i < n; ++i)
-          for (int c = 0; c < d; ++c) {
-            a.x[i * d + c] = e.x(i, c);
-            a.v[i * d + c] = e.v(i, c);
-          }
-      }
-      return true;
+    if (EngineApplies()) return SolveWithEngine(a, x0, v0, fresh, nodes);
+    return SolveOwn(a, initial, nodes);
+  }
+
+  // Reduced Newton on the engine of this window length (window_engine.h).
+  bool SolveWithEngine(Attempt& a, const State& x0, const State& v0, bool fresh,
+                       bool nodes) {
+    const int n = a.points;
+    WindowEngine<P>& e = Engine(n, a.dt);
+    last_engine_ = &e;
+    solvers::NewtonOptions newton = options_.solve.newton;
+    newton.phase_timings = false;
+    newton.final_residual = false;
+    // A march hands each window's round-off to the next, and an
+    // oscillation amplifies it: with the global solve's stop at 32 ε an
+    // SBP84 march of the anharmonic oscillator (4096 steps to t = 10) ended
+    // 1.3e-11 off in the velocity, at 4 ε 1.7e-13, for 10 % more
+    // corrections. Round-off that stops the corrections short of 4 ε is
+    // recognised as stagnation (newton.h).
+    if (newton.step_tolerance == 0)
+      newton.step_tolerance = 4 * std::numeric_limits<double>::epsilon();
+    const State lambda3 = Lambda3Start(n);
+    const auto o =
+        e.Solve(x0, v0, px_.data(), lambda3.data(), newton, fresh, nodes);
+    a.iterations = o.report.iterations;
+    a.corrections = o.report.corrections;
+    if (!o.failure.empty()) {
+      a.residual = o.report.residual_norm;
+      Failed(a,
+             o.split_helps ? WindowFailure::kNewton
+                           : WindowFailure::kUnderResolved,
+             o.failure);
+      return false;
     }
-    // Full Newton, or the reduced one with an extended-precision residual:
-    // a solve of its own from the same start.
+    a.end = o.end;
+    a.x_end = o.x_end;
+    a.v_end = o.v_end;
+    a.est_x = o.est_x;
+    a.est_v = o.est_v;
+    a.roundoff_v = o.roundoff_v;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < d; ++c)
+        a.deviation =
+            std::max(a.deviation, std::abs(e.x(i, c) - px_[i * d + c]));
+    if (nodes) {
+      a.x.resize(std::size_t(n) * d);
+      a.v.resize(std::size_t(n) * d);
+      for (int i = 0; i < n; ++i)
+        for (int c = 0; c < d; ++c) {
+          a.x[i * d + c] = e.x(i, c);
+          a.v[i * d + c] = e.v(i, c);
+        }
+    }
+    return true;
+  }
+
+  // Full Newton, Ceres LM, or the reduced Newton with an extended-precision
+  // residual: a solve of its own from the same start. Ceres LM also starts
+  // λ3 at the predictor's −p, as the engine does; full Newton starts the
+  // multipliers at 0.
+  bool SolveOwn(Attempt& a, const InitialData& initial, bool nodes) {
+    const int n = a.points;
     SolveOptions so = options_.solve;
     so.guess = px_;
     const Grid g{.op = op_,
@@ -178,12 +196,28 @@ class WindowSolver {
                  .t_start = 0.0,
                  .t_end = a.dt * double(n - 1),
                  .sigma0 = sigma0_};
-    const IvpSolution<double> s = SolveIvp(problem_, initial, g, so);
+    IvpSolution<double> s;
+    if (so.path == Path::kCeresLm) {
+      CeresOptions lm;
+      const State lambda3 = Lambda3Start(n);
+      lm.lambda3.assign(lambda3.begin(), lambda3.end());
+      // The predictor's start is within Newton's quadratic convergence, so
+      // LM starts undamped (Ceres' largest trust region; a failed step still
+      // shrinks it) and stops on a step of 4 ε relative, Newton's stop in a
+      // march (above). With the global solve's settings (region 1e4, stop
+      // at 1e-16) it spent 34 iterations per window tripling the region
+      // until the stiff directions moved, against 8 (anharmonic to T = 10,
+      // SBP42, 4097 points, W = 48; docs/method.md §8).
+      lm.initial_radius = 1e16;
+      lm.parameter_tolerance = 4 * std::numeric_limits<double>::epsilon();
+      s = SolveIvpCeres(problem_, initial, g, so, lm);
+    } else {
+      s = SolveIvp(problem_, initial, g, so);
+    }
     a.residual = s.residual_norm;
     a.iterations = s.iterations;
     a.corrections = s.iterations;
     if (!s.status.converged) {
-      a.residual = s.residual_norm;
       Failed(a,
              s.status.reason.rfind("under-resolved", 0) == 0
                  ? WindowFailure::kUnderResolved

@@ -1,0 +1,68 @@
+// One entry point for every way vivp finds the critical point of the doubled
+// SBP action (Rothkopf & Nordström 2023; docs/method.md §4–§8):
+//
+//   vivp::problems::Anharmonic anharmonic;
+//   const vivp::InitialData initial{.x = {1.0}, .v = {0.3}};
+//   const vivp::Grid grid{.op = "sbp42", .points = 4097, .t_end = 10.0};
+//   // one global solve: reduced Newton (default), full Newton or Ceres LM
+//   auto sol = vivp::Solve(anharmonic, initial, grid, {.path = ...});
+//   // a march in windows (uniform, or under error control with a
+//   // tolerance), each window by the same three paths
+//   vivp::MarchOptions march;
+//   march.window_points = vivp::DefaultWindowPoints(vivp::Path::kCeresLm,
+//                                                   grid.op);
+//   march.solve.path = vivp::Path::kCeresLm;
+//   auto marched = vivp::Solve(anharmonic, initial, grid, march);
+//
+// Either form checks the combination first (solver_choice.h) and throws
+// std::invalid_argument with the sentence a front end shows. The paths
+// themselves: solve_ivp.h (Newton), ceres_lm.h (Levenberg–Marquardt),
+// march.h (windows).
+#pragma once
+
+#include <stdexcept>
+
+#include "solvers/variational/ceres_lm.h"
+#include "solvers/variational/march.h"
+#include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/solver_choice.h"
+
+namespace vivp {
+
+namespace detail {
+
+inline void Require(const SolveRequest& request) {
+  const Refusal refusal = CheckSolveRequest(request);
+  if (!refusal.ok()) throw std::invalid_argument(refusal.Sentence());
+}
+
+}  // namespace detail
+
+// One global solve of the whole grid by options.path.
+template <action::LagrangianProblem P>
+IvpSolution<double> Solve(const P& problem, const InitialData& initial,
+                          const Grid& grid, const SolveOptions& options = {}) {
+  detail::Require({.path = options.path,
+                   .op = grid.op,
+                   .window_points = 0,
+                   .extended_residual = options.extended_residual});
+  if (options.path == Path::kCeresLm)
+    return SolveIvpCeres(problem, initial, grid, options);
+  return SolveIvp(problem, initial, grid, options);
+}
+
+// A march in windows of options.window_points, each window solved by
+// options.solve.path; the observer (may be empty) sees every node once.
+template <action::LagrangianProblem P>
+MarchResult Solve(const P& problem, const InitialData& initial,
+                  const Grid& grid, const MarchOptions& options,
+                  const NodeObserver& observer = {}) {
+  detail::Require({.path = options.solve.path,
+                   .op = grid.op,
+                   .window_points = options.window_points,
+                   .tolerance = options.tolerance.enabled(),
+                   .extended_residual = options.solve.extended_residual});
+  return MarchIvp(problem, initial, grid, options, observer);
+}
+
+}  // namespace vivp
