@@ -103,7 +103,8 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
       w.steps = static_cast<long>(knob);
       w.h = t_end / w.steps;
     }
-    run = [&](bool with_observer) {
+    // `adaptive` by value: the run is called after this block ends.
+    run = [&, adaptive](bool with_observer) {
       const ExternalRun r =
           ExternalMethods().at(method)(problem_name, y0, t_end, knob);
       w.evaluations = r.evaluations;
