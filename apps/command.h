@@ -9,8 +9,11 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace vivp::app {
 
@@ -41,6 +44,31 @@ nlohmann::json JsonNumber(double v);
 // to the file `target`; a file that cannot be written is an error.
 void WriteJson(const std::string& target, const nlohmann::json& j,
                int indent = 1);
+
+// Splits a comma-separated option value such as "16,32,64" and converts each
+// item with `item_of` (nullopt for an item it does not accept). A bad item or
+// an empty list is a UsageError naming the flag, what it expects and an
+// example, so every list option reads and fails the same way.
+template <class T, class ItemOf>
+std::vector<T> ParseList(const std::string& list, const std::string& flag,
+                         const std::string& expected,
+                         const std::string& example, ItemOf item_of) {
+  std::vector<T> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const std::optional<T> v = item.empty() ? std::nullopt : item_of(item);
+    if (!v)
+      throw UsageError(flag + ": expected a comma-separated list of " +
+                       expected + " such as " + example + ", got '" + list +
+                       "'");
+    out.push_back(*v);
+  }
+  if (out.empty())
+    throw UsageError(flag + ": expected at least one value, such as " +
+                     example);
+  return out;
+}
 
 // CLI11 validators with messages that name the valid values.
 CLI::Validator FiniteNumber();

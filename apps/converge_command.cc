@@ -32,29 +32,19 @@ nlohmann::json StudyJson(const ConvergeOptions& o, const NamedProblem& problem,
 namespace {
 
 std::vector<long long> ParsePoints(const std::string& list) {
-  std::vector<long long> out;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    long long v = 0;
-    std::size_t used = 0;
-    try {
-      v = std::stoll(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != item.size() || item.empty())
-      throw UsageError(
-          "--points: expected a comma-separated list of whole "
-          "numbers such as 16,32,64, got '" +
-          list + "'");
-    out.push_back(v);
-  }
-  if (out.empty())
-    throw UsageError(
-        "--points: expected at least one grid size, such as "
-        "16,32,64");
-  return out;
+  return ParseList<long long>(
+      list, "--points", "whole numbers", "16,32,64",
+      [](const std::string& item) -> std::optional<long long> {
+        std::size_t used = 0;
+        long long v = 0;
+        try {
+          v = std::stoll(item, &used);
+        } catch (const std::exception&) {
+          return std::nullopt;
+        }
+        if (used != item.size()) return std::nullopt;
+        return v;
+      });
 }
 
 nlohmann::json OrdersJson(const ConvergenceOrders& o) {

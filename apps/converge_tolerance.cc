@@ -13,25 +13,16 @@ namespace vivp::app {
 namespace {
 
 std::vector<double> ParseTolerances(const std::string& list) {
-  std::vector<double> out;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() ||
-        !std::isfinite(v) || !(v > 0) || !(v < 1))
-      throw UsageError(
-          "--tolerance: expected a comma-separated list of tolerances in (0, "
-          "1) such as 1e-4,1e-6,1e-8, got '" +
-          list + "'");
-    out.push_back(v);
-  }
-  if (out.empty())
-    throw UsageError(
-        "--tolerance: expected at least one tolerance, such as "
-        "1e-6");
-  return out;
+  return ParseList<double>(
+      list, "--tolerance", "tolerances in (0, 1)", "1e-4,1e-6,1e-8",
+      [](const std::string& item) -> std::optional<double> {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (end != item.c_str() + item.size() || !std::isfinite(v) ||
+            !(v > 0) || !(v < 1))
+          return std::nullopt;
+        return v;
+      });
 }
 
 nlohmann::json TrackingJson(const ToleranceTracking& t) {

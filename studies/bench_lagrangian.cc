@@ -27,15 +27,10 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
                                   64, p.reference, reference);
 }
 
-#define VIVP_BENCH_LAGRANGIAN(d, s)                   \
+#define VIVP_BENCH_LAGRANGIAN_INSTANCE(d, s)          \
   template BenchProblem LagrangianBenchProblem<d, s>( \
       const std::string&, ErasedHamiltonian<d, s>, double);
-VIVP_BENCH_LAGRANGIAN(1, true)
-VIVP_BENCH_LAGRANGIAN(1, false)
-VIVP_BENCH_LAGRANGIAN(2, true)
-VIVP_BENCH_LAGRANGIAN(2, false)
-VIVP_BENCH_LAGRANGIAN(3, true)
-VIVP_BENCH_LAGRANGIAN(3, false)
-#undef VIVP_BENCH_LAGRANGIAN
+VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_INSTANCE)
+#undef VIVP_BENCH_LAGRANGIAN_INSTANCE
 
 }  // namespace vivp::steppers

@@ -21,15 +21,15 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
                                     ErasedHamiltonian<d, Separable> h,
                                     double t_end);
 
-#define VIVP_BENCH_LAGRANGIAN(d, s)                          \
+// The (d, separable) shapes compiled, as an X-macro so that the declarations
+// here and the instantiations in bench_lagrangian.cc name the same list.
+#define VIVP_BENCH_LAGRANGIAN_SHAPES(X) \
+  X(1, true) X(1, false) X(2, true) X(2, false) X(3, true) X(3, false)
+
+#define VIVP_BENCH_LAGRANGIAN_EXTERN(d, s)                   \
   extern template BenchProblem LagrangianBenchProblem<d, s>( \
       const std::string&, ErasedHamiltonian<d, s>, double);
-VIVP_BENCH_LAGRANGIAN(1, true)
-VIVP_BENCH_LAGRANGIAN(1, false)
-VIVP_BENCH_LAGRANGIAN(2, true)
-VIVP_BENCH_LAGRANGIAN(2, false)
-VIVP_BENCH_LAGRANGIAN(3, true)
-VIVP_BENCH_LAGRANGIAN(3, false)
-#undef VIVP_BENCH_LAGRANGIAN
+VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_EXTERN)
+#undef VIVP_BENCH_LAGRANGIAN_EXTERN
 
 }  // namespace vivp::steppers

@@ -101,7 +101,7 @@ LegendreForm<L::kDim> FindLegendreForm(const L& l, const InitialData& init) {
     double b[d];
     VectorPotential(l, q, b);
     const double l0 = AtUnitVelocity(l, q, -1, 0, -1, 0);
-    double quadratic = -0.0 + l0, bscale = 0;
+    double quadratic = l0, bscale = 0;
     for (int i = 0; i < d; ++i) {
       quadratic += b[i] * v[i];
       for (int j = 0; j < d; ++j) quadratic += 0.5 * v[i] * f.mass(i, j) * v[j];

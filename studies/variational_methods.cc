@@ -17,11 +17,6 @@ namespace vivp::steppers {
 
 namespace {
 
-// Bench problems with a variational registry entry of the same name: the
-// built-in anharmonic, pendulum and Kepler problems and every registered
-// Lagrangian (the initial states are compared below).
-bool InRegistry(const std::string& problem) { return HasProblem(problem); }
-
 // A method name: variational_sbpXY (its knob a tolerance, like dopri5's) or
 // variational_sbpXY_uniform (its knob a step count).
 constexpr std::string_view kUniform = "_uniform";
@@ -52,7 +47,7 @@ ExternalRun RunVariational(const std::string& method,
                            const std::vector<double>& y0, double t_end,
                            double knob) {
   ExternalRun run;
-  if (!InRegistry(problem)) {
+  if (!HasProblem(problem)) {
     run.status = "n/a (" + problem + " has no variational registry entry)";
     return run;
   }
@@ -187,7 +182,7 @@ void RegisterVariationalMethods() {
                    double t_end, double knob) {
               return RunVariational(name, problem, y0, t_end, knob);
             },
-            InRegistry, Adaptive(name));
+            HasProblem, Adaptive(name));
       }
     return true;
   }();

@@ -29,7 +29,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -38,7 +37,6 @@
 
 #include "core/action/full_system.h"
 #include "core/action/reduced_system.h"
-#include "core/autodiff/pointwise.h"
 #include "core/sbp/builder.h"
 #include "solvers/variational/end_state.h"
 #include "solvers/variational/ivp_types.h"
