@@ -14,7 +14,7 @@
 #include "solvers/bea/conservation.h"
 #include "solvers/bea/derivation.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 using bea::Series;
@@ -200,4 +200,4 @@ Runner AddBeaCommand(CLI::App& app) {
   };
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -8,7 +8,7 @@
 
 #include "solvers/bea/derivation.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
 struct BeaOptions {
   std::string method = "sv";
@@ -44,4 +44,4 @@ std::vector<double> ParseNumberList(const std::string& s,
 // conservation of H_mod and I_mod measured.
 int RunBeaVerify(BeaOptions o);
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -7,7 +7,7 @@
 #include "apps/bea_command.h"
 #include "apps/command.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 // "-0.2" -> -1/5 exactly, "3/4", "alpha" -> a symbol.
@@ -103,4 +103,4 @@ bea::DeriveOptions BeaDeriveOptions(const BeaOptions& o, bool radial) {
   return d;
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -11,7 +11,7 @@
 #include "solvers/bea/conservation.h"
 #include "solvers/bea/multistep.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 // The stability of a method that verify can run: numeric coefficients and
@@ -149,4 +149,4 @@ int RunBeaVerify(BeaOptions o) {
   return 0;
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -14,7 +14,7 @@
 #include "apps/command.h"
 #include "studies/bench_problems.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 struct BenchOptions {
@@ -46,7 +46,7 @@ std::string Join(const std::vector<std::string>& v) {
 
 std::string ProblemNames() {
   std::vector<std::string> names;
-  for (const auto& p : steppers::BenchProblems()) names.push_back(p.name);
+  for (const auto& p : studies::BenchProblems()) names.push_back(p.name);
   return Join(names);
 }
 
@@ -65,7 +65,7 @@ std::vector<double> ParseSteps(const std::string& s) {
   return out;
 }
 
-nlohmann::json RowJson(const steppers::WorkPoint& w) {
+nlohmann::json RowJson(const studies::WorkPoint& w) {
   return {{"method", w.method},
           {"steps", w.steps},
           {"tolerance", JsonNumber(w.tolerance)},
@@ -80,7 +80,7 @@ nlohmann::json RowJson(const steppers::WorkPoint& w) {
           {"status", w.status}};
 }
 
-void PrintRow(std::ostream& out, const steppers::WorkPoint& w) {
+void PrintRow(std::ostream& out, const studies::WorkPoint& w) {
   // The status goes after the fixed-width columns: it can be a long reason.
   char line[160];
   std::snprintf(line, sizeof line,
@@ -92,9 +92,9 @@ void PrintRow(std::ostream& out, const steppers::WorkPoint& w) {
 }
 
 int RunBench(const BenchOptions& o) {
-  const steppers::BenchProblem* problem = nullptr;
+  const studies::BenchProblem* problem = nullptr;
   try {
-    problem = &steppers::FindBenchProblem(o.problem);
+    problem = &studies::FindBenchProblem(o.problem);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--problem: ") + e.what());
   }
@@ -109,7 +109,7 @@ int RunBench(const BenchOptions& o) {
   const std::vector<double> steps = ParseSteps(o.steps);
   for (const auto& m : methods)
     for (double k : steps)
-      if (!steppers::IsAdaptive(m) && k != std::floor(k))
+      if (!studies::IsAdaptive(m) && k != std::floor(k))
         throw UsageError("--steps: step counts must be whole numbers for " + m +
                          ", got " + std::to_string(k));
   if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
@@ -121,10 +121,10 @@ int RunBench(const BenchOptions& o) {
            " max|dI|    seconds      evals  it/st status\n";
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& m : methods) {
-    std::vector<steppers::WorkPoint> sweep;
+    std::vector<studies::WorkPoint> sweep;
     if (steps.empty()) {
       sweep =
-          steppers::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
+          studies::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
     } else {
       for (double k : steps)
         sweep.push_back(problem->measure(m, k, static_cast<int>(o.repeats)));
@@ -179,4 +179,4 @@ Runner AddBenchCommand(CLI::App& app) {
   };
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

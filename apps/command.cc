@@ -7,7 +7,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-namespace vivp::app {
+namespace vivp::apps {
 
 nlohmann::json JsonNumber(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
@@ -70,4 +70,4 @@ CLI::Validator WholeNumberAtLeast(long long minimum, const std::string& hint) {
       "INT", "WholeNumberAtLeast");
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace vivp::app {
+namespace vivp::apps {
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -74,4 +74,4 @@ std::vector<T> ParseList(const std::string& list, const std::string& flag,
 CLI::Validator FiniteNumber();
 CLI::Validator WholeNumberAtLeast(long long minimum, const std::string& hint);
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

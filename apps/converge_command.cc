@@ -14,15 +14,16 @@
 #include "solvers/variational/solver_choice.h"
 #include "studies/registry.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
-void PrintReference(std::ostream& human, const NamedProblem& problem) {
+void PrintReference(std::ostream& human, const studies::NamedProblem& problem) {
   if (problem.reference != "exact")
     human << "no closed form; errors against the reference "
           << problem.reference << "\n";
 }
 
-nlohmann::json StudyJson(const ConvergeOptions& o, const NamedProblem& problem,
+nlohmann::json StudyJson(const ConvergeOptions& o,
+                         const studies::NamedProblem& problem,
                          long long slab_points) {
   return {{"problem", problem.name}, {"reference", problem.reference},
           {"operator", o.op},        {"solver", o.solver},
@@ -47,7 +48,7 @@ std::vector<long long> ParsePoints(const std::string& list) {
       });
 }
 
-nlohmann::json OrdersJson(const ConvergenceOrders& o) {
+nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
   return {{"x", JsonNumber(o.x)},
           {"v", JsonNumber(o.v)},
           {"x_corrected", JsonNumber(o.x_corrected)},
@@ -55,10 +56,10 @@ nlohmann::json OrdersJson(const ConvergenceOrders& o) {
 }
 
 // The solver of --solver and its options.
-SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
-  SolveOptions options;
+variational::SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
+  variational::SolveOptions options;
   try {
-    options.path = ParseSolver(o.solver);
+    options.path = variational::ParseSolver(o.solver);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--solver: ") + e.what());
   }
@@ -70,14 +71,15 @@ SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
 // solver's default (Ceres LM marches unless --slab-points 0; a tolerance
 // marches in 48 for Newton). An impossible combination is the user's error,
 // refused before any work.
-ConvergeOptions Resolved(const ConvergeOptions& o, const SolveOptions& solve) {
-  const SolveRequest request{
+ConvergeOptions Resolved(const ConvergeOptions& o,
+                         const variational::SolveOptions& solve) {
+  const variational::SolveRequest request{
       .path = solve.path,
       .op = o.op,
       .window_points = o.slab_points_given ? o.slab_points : -1,
       .tolerance = !o.tolerances.empty(),
       .extended_residual = solve.extended_residual};
-  const Refusal refusal = CheckSolveRequest(request);
+  const variational::Refusal refusal = CheckSolveRequest(request);
   if (!refusal.ok()) throw UsageError(refusal.Sentence());
   ConvergeOptions r = o;
   r.slab_points = WindowPoints(request);
@@ -105,8 +107,8 @@ std::vector<long long> CheckedGridSizes(const ConvergeOptions& o) {
 // The table of a study over grid sizes: one row per size. Returns whether
 // every solve converged.
 bool PrintConvergenceTable(std::ostream& human, const ConvergeOptions& o,
-                           const NamedProblem& problem,
-                           const ConvergenceStudy& study) {
+                           const studies::NamedProblem& problem,
+                           const studies::ConvergenceStudy& study) {
   human << problem.name << " (" << problem.description << "), " << o.op
         << ", solver " << o.solver << ", t_end = " << o.t_end;
   if (o.slab_points > 0)
@@ -147,7 +149,8 @@ bool PrintConvergenceTable(std::ostream& human, const ConvergeOptions& o,
 
 // The orders fitted over the converged grid sizes, against both step
 // conventions.
-void PrintFittedOrders(std::ostream& human, const ConvergenceStudy& study) {
+void PrintFittedOrders(std::ostream& human,
+                       const studies::ConvergenceStudy& study) {
   // An order is NaN when fewer than two errors lie above round-off (e.g.
   // free fall with SBP42, exact on parabolas): say so instead of "nan".
   int converged = 0;
@@ -174,8 +177,8 @@ void PrintFittedOrders(std::ostream& human, const ConvergenceStudy& study) {
 }
 
 nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
-                                    const NamedProblem& problem,
-                                    const ConvergenceStudy& study) {
+                                    const studies::NamedProblem& problem,
+                                    const studies::ConvergenceStudy& study) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : study.rows)
     rows.push_back({{"points", r.points},
@@ -201,16 +204,16 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
 int RunConverge(const ConvergeOptions& given) {
   if (!given.json.empty() && given.json != "-")
     CheckOutputFile(given.json, given.force);
-  const NamedProblem& problem = FindProblem(given.problem);
-  const SolveOptions options = ConvergeSolveOptions(given);
+  const studies::NamedProblem& problem = studies::FindProblem(given.problem);
+  const variational::SolveOptions options = ConvergeSolveOptions(given);
   const ConvergeOptions o = Resolved(given, options);
-  Grid grid;
+  variational::Grid grid;
   grid.op = o.op;
   grid.t_end = o.t_end;
   if (!o.tolerances.empty())
     return RunToleranceConverge(o, problem, grid, options);
   const std::vector<long long> points = CheckedGridSizes(o);
-  const ConvergenceStudy study =
+  const studies::ConvergenceStudy study =
       RunConvergence(problem, grid, points, options, 1e-13, o.slab_points);
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
@@ -233,7 +236,8 @@ Runner AddConvergeCommand(CLI::App& app) {
       "converge",
       "Errors at t_end and fitted orders of the variational solver over grid "
       "sizes");
-  cmd->add_option("--problem", o->problem, "problem: " + ProblemNameList())
+  cmd->add_option("--problem", o->problem,
+                  "problem: " + studies::ProblemNameList())
       ->required();
   std::vector<std::string> names(sbp::kOperatorNames.begin(),
                                  sbp::kOperatorNames.end());
@@ -272,4 +276,4 @@ Runner AddConvergeCommand(CLI::App& app) {
   };
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -8,7 +8,7 @@
 
 #include "studies/registry.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
 struct ConvergeOptions {
   std::string problem;
@@ -26,16 +26,19 @@ struct ConvergeOptions {
 
 // A line naming what the errors are measured against when the problem has
 // no closed form (a reference it computes itself); nothing otherwise.
-void PrintReference(std::ostream& human, const NamedProblem& problem);
+void PrintReference(std::ostream& human, const studies::NamedProblem& problem);
 
 // The fields every study's JSON has besides its rows: the problem, what
 // its errors are measured against, the operator, solver, span and windows.
-nlohmann::json StudyJson(const ConvergeOptions& o, const NamedProblem& problem,
+nlohmann::json StudyJson(const ConvergeOptions& o,
+                         const studies::NamedProblem& problem,
                          long long slab_points);
 
 // `vivp converge --tolerance LIST`: the march under error control for each
 // tolerance, the achieved errors, the points used and the time.
-int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
-                         const Grid& grid, const SolveOptions& options);
+int RunToleranceConverge(const ConvergeOptions& o,
+                         const studies::NamedProblem& problem,
+                         const variational::Grid& grid,
+                         const variational::SolveOptions& options);
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

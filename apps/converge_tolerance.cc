@@ -9,7 +9,7 @@
 #include "apps/command.h"
 #include "apps/converge_command.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 std::vector<double> ParseTolerances(const std::string& list) {
@@ -25,7 +25,7 @@ std::vector<double> ParseTolerances(const std::string& list) {
       });
 }
 
-nlohmann::json TrackingJson(const ToleranceTracking& t) {
+nlohmann::json TrackingJson(const studies::ToleranceTracking& t) {
   return {{"slope", JsonNumber(t.slope)},
           {"ratio_min", JsonNumber(t.min_ratio)},
           {"ratio_max", JsonNumber(t.max_ratio)}};
@@ -34,8 +34,9 @@ nlohmann::json TrackingJson(const ToleranceTracking& t) {
 // The table of a study over tolerances: one row per tolerance. Returns
 // whether every run converged.
 bool PrintToleranceTable(std::ostream& human, const ConvergeOptions& o,
-                         const NamedProblem& problem,
-                         const ConvergenceStudy& study, long long window) {
+                         const studies::NamedProblem& problem,
+                         const studies::ConvergenceStudy& study,
+                         long long window) {
   human << problem.name << " (" << problem.description << "), " << o.op
         << ", solver " << o.solver << ", t_end = " << o.t_end
         << ", error control in windows of " << window
@@ -72,8 +73,8 @@ bool PrintToleranceTable(std::ostream& human, const ConvergeOptions& o,
 // How the errors follow the tolerance: the fitted slope and the range of
 // error/tolerance, for the end error and the largest node errors.
 void PrintToleranceTracking(std::ostream& human,
-                            const ConvergenceStudy& study) {
-  auto tracking = [](const ToleranceTracking& t) {
+                            const studies::ConvergenceStudy& study) {
+  auto tracking = [](const studies::ToleranceTracking& t) {
     if (std::isnan(t.slope)) return std::string("n/a (fewer than two rows)");
     std::ostringstream s;
     s << "slope " << std::fixed << std::setprecision(2) << t.slope
@@ -90,8 +91,8 @@ void PrintToleranceTracking(std::ostream& human,
 }
 
 nlohmann::json ToleranceStudyJson(const ConvergeOptions& o,
-                                  const NamedProblem& problem,
-                                  const ConvergenceStudy& study,
+                                  const studies::NamedProblem& problem,
+                                  const studies::ConvergenceStudy& study,
                                   long long window) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : study.rows)
@@ -118,12 +119,14 @@ nlohmann::json ToleranceStudyJson(const ConvergeOptions& o,
 
 }  // namespace
 
-int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
-                         const Grid& grid, const SolveOptions& options) {
+int RunToleranceConverge(const ConvergeOptions& o,
+                         const studies::NamedProblem& problem,
+                         const variational::Grid& grid,
+                         const variational::SolveOptions& options) {
   const std::vector<double> tolerances = ParseTolerances(o.tolerances);
   // Resolved by the caller: the window given, or the solver's default.
   const long long window = o.slab_points;
-  const ConvergenceStudy study =
+  const studies::ConvergenceStudy study =
       RunToleranceStudy(problem, grid, tolerances, options, window);
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   const bool all_converged =
@@ -138,4 +141,4 @@ int RunToleranceConverge(const ConvergeOptions& o, const NamedProblem& problem,
   return 0;
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -15,13 +15,13 @@ int main(int argc, char** argv) {
       "vivp: structure-preserving time integration from the action "
       "(summation-by-parts variational IVP solver)"};
   app.require_subcommand(1);
-  const std::vector<std::pair<std::string, vivp::app::Runner>> commands = {
-      {"spectrum", vivp::app::AddSpectrumCommand(app)},
-      {"converge", vivp::app::AddConvergeCommand(app)},
-      {"bea", vivp::app::AddBeaCommand(app)},
-      {"bench", vivp::app::AddBenchCommand(app)},
-      {"run", vivp::app::AddRunCommand(app)},
-      {"scene", vivp::app::AddSceneCommand(app)},
+  const std::vector<std::pair<std::string, vivp::apps::Runner>> commands = {
+      {"spectrum", vivp::apps::AddSpectrumCommand(app)},
+      {"converge", vivp::apps::AddConvergeCommand(app)},
+      {"bea", vivp::apps::AddBeaCommand(app)},
+      {"bench", vivp::apps::AddBenchCommand(app)},
+      {"run", vivp::apps::AddRunCommand(app)},
+      {"scene", vivp::apps::AddSceneCommand(app)},
   };
 
   try {
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
     // Already FILE:LINE:COL: what is wrong; what is expected.
     std::cerr << e.what() << "\n";
     return 2;
-  } catch (const vivp::app::UsageError& e) {
+  } catch (const vivp::apps::UsageError& e) {
     std::cerr << "vivp: error: " << e.what() << "\n";
     return 2;
   } catch (const std::invalid_argument& e) {

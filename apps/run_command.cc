@@ -14,7 +14,7 @@
 #include "scene/run.h"
 #include "scene/scene.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 namespace fs = std::filesystem;
@@ -168,4 +168,4 @@ Runner AddSceneCommand(CLI::App& app) {
   };
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -6,7 +6,7 @@
 #include <iomanip>
 #include <sstream>
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 std::string Short(double v) {
@@ -125,4 +125,4 @@ void WriteSummary(const std::filesystem::path& dir, const scene::Scene& s,
   if (!f) throw std::runtime_error("cannot write summary.json");
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

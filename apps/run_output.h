@@ -12,7 +12,7 @@
 #include "scene/run.h"
 #include "scene/scene.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
 // gnuplot scripts next to the PNGs; they read the CSV files directly. A
 // plot that cannot be drawn is a warning (in `warnings`), not a failure of
@@ -33,4 +33,4 @@ void WriteSummary(const std::filesystem::path& dir, const scene::Scene& s,
                   const std::vector<std::string>& warnings, double total,
                   std::ostream& human);
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -6,7 +6,7 @@
 #include "apps/run_output.h"
 #include "report/plot.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 using PlotCurves = std::vector<std::pair<std::string, std::string>>;
@@ -22,7 +22,7 @@ struct RunPlots {
   std::vector<std::string>& warnings;
   std::string title;
 
-  void Render(plot::Figure& fig, const std::string& png) {
+  void Render(report::Figure& fig, const std::string& png) {
     try {
       fig.Render();
       files.push_back(png);
@@ -35,13 +35,13 @@ struct RunPlots {
       if (layout.columns[k] == name) return int(k) + 2;  // after t
     return 0;
   }
-  void Header(plot::Figure& fig) const {
+  void Header(report::Figure& fig) const {
     fig.script() << "set datafile separator ','\nset title \"" << title
                  << "\" noenhanced\n"
                     "set key outside below horizontal maxrows 2\nset grid\n";
   }
   // Time axes span exactly the scene's interval (gnuplot would round it up).
-  void TimeAxis(plot::Figure& fig) const {
+  void TimeAxis(report::Figure& fig) const {
     fig.script() << std::setprecision(17) << "set xrange [" << s.t_start << ":"
                  << s.t_end << "]\n";
   }
@@ -49,7 +49,7 @@ struct RunPlots {
 
 void PlotTrajectory(RunPlots& p) {
   const int d = p.layout.dof;
-  plot::Figure fig(p.dir, "trajectory");
+  report::Figure fig(p.dir, "trajectory");
   p.Header(fig);
   auto& g = fig.script();
   if (d == 2) {
@@ -78,7 +78,7 @@ void PlotTrajectory(RunPlots& p) {
 
 void PlotSeries(RunPlots& p, const std::string& stem, const std::string& ylabel,
                 const PlotCurves& curves, bool log) {
-  plot::Figure fig(p.dir, stem);
+  report::Figure fig(p.dir, stem);
   p.Header(fig);
   p.TimeAxis(fig);
   // A quantity that stays within 1e-3 (relative) of its initial value is
@@ -159,4 +159,4 @@ std::vector<std::string> WritePlots(const std::filesystem::path& dir,
   return files;
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <sstream>
 
-namespace vivp::app {
+namespace vivp::apps {
 
 ProgressLine::ProgressLine(const FileSink& sink, double t_start, double t_end,
                            bool show)
@@ -50,4 +50,4 @@ void ProgressLine::Loop() {
                            [this] { return done_; }));
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

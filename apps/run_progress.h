@@ -7,7 +7,7 @@
 
 #include "apps/run_sink.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
 // After a second, a line on stderr (when it is a terminal) every half
 // second: elapsed time and, for marched and stepped runs, how far in time.
@@ -29,4 +29,4 @@ class ProgressLine {
   bool printed_ = false;
 };
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -3,7 +3,7 @@
 #include <iomanip>
 #include <stdexcept>
 
-namespace vivp::app {
+namespace vivp::apps {
 
 void FileSink::Begin(const scene::RunLayout& layout) {
   layout_ = layout;
@@ -67,4 +67,4 @@ void FileSink::Finish() {
   }
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

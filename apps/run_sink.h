@@ -15,7 +15,7 @@
 
 #include "scene/run.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 
 // Statistics of one column over the written nodes.
 struct ColumnStats {
@@ -68,4 +68,4 @@ class FileSink : public scene::RunSink {
   double last_t_ = 0;
 };
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -6,12 +6,12 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
+#include "core/linalg/spectrum.h"
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
-#include "core/spectrum.h"
 #include "report/spectrum_figures.h"
 
-namespace vivp::app {
+namespace vivp::apps {
 namespace {
 
 struct SpectrumOptions {
@@ -34,7 +34,7 @@ std::vector<double> ToStd(const Eigen::VectorXd& v) {
   return std::vector<double>(v.data(), v.data() + v.size());
 }
 
-nlohmann::json SpectrumJson(const Spectrum& s) {
+nlohmann::json SpectrumJson(const linalg::Spectrum& s) {
   return {{"eigenvalues", ComplexList(s.eigenvalues)},
           {"singular_values", ToStd(s.singular_values)},
           {"zero_modes", s.zero.algebraic_multiplicity},
@@ -70,8 +70,8 @@ std::string Pattern(const Eigen::VectorXd& v) {
 }
 
 void PrintSummary(std::ostream& out, const SpectrumOptions& o,
-                  const sbp::Operator<double>& d, const Spectrum& sd,
-                  const Spectrum& sdbar) {
+                  const sbp::Operator<double>& d, const linalg::Spectrum& sd,
+                  const linalg::Spectrum& sdbar) {
   out << std::setprecision(4) << d.name() << " at N = " << d.points()
       << " on [0, " << o.t_end << "], dt = " << d.dt()
       << ", sigma0 = " << o.sigma0 << "\n";
@@ -107,9 +107,10 @@ int RunSpectrum(const SpectrumOptions& o) {
 
   const auto d = sbp::MakeOperator<double>(o.op, o.points, 0.0, o.t_end);
   const sbp::RegularizedOperator<double> dbar(d, o.sigma0);
-  const Spectrum sd = AnalyzeSpectrum(d.DenseD());
+  const linalg::Spectrum sd = linalg::AnalyzeSpectrum(d.DenseD());
   // The shift column does not change the spectrum; x_i = 1 for definiteness.
-  const Spectrum sdbar = AnalyzeSpectrum(dbar.AffineMatrix(1.0));
+  const linalg::Spectrum sdbar =
+      linalg::AnalyzeSpectrum(dbar.AffineMatrix(1.0));
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   PrintSummary(human, o, d, sd, sdbar);
@@ -128,12 +129,12 @@ int RunSpectrum(const SpectrumOptions& o) {
   }
   if (!o.plot.empty()) {
     const std::string label = std::string(d.name());
-    human << "  wrote "
-          << figures::NullVectorFigure(sd, label, d.points(), o.plot).string()
-          << "\n  wrote "
-          << figures::SpectrumFigure(sd, sdbar, label, d.points(), o.plot)
-                 .string()
-          << "\n";
+    human
+        << "  wrote "
+        << report::NullVectorFigure(sd, label, d.points(), o.plot).string()
+        << "\n  wrote "
+        << report::SpectrumFigure(sd, sdbar, label, d.points(), o.plot).string()
+        << "\n";
   }
   return 0;
 }
@@ -175,4 +176,4 @@ Runner AddSpectrumCommand(CLI::App& app) {
   return [o] { return RunSpectrum(*o); };
 }
 
-}  // namespace vivp::app
+}  // namespace vivp::apps

@@ -13,16 +13,17 @@
 #include "solvers/variational/solve_ivp.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 using namespace vivp::problems;
 
 namespace {
 
 template <class A, class B>
 void Compare(const char* name, const A& hand, const B& composed,
-             const InitialData& init, double t_end) {
+             const vivp::variational::InitialData& init, double t_end) {
   const Grid g{
       .op = "sbp42", .points = 1 << 16, .t_start = 0.0, .t_end = t_end};
-  IvpSolution<double> a, b;
+  vivp::variational::IvpSolution<double> a, b;
   std::vector<double> ta, tb;
   for (int r = 0; r < 7; ++r) {
     ta.push_back(bench::MedianSeconds([&] { a = SolveIvp(hand, init, g); }, 1));

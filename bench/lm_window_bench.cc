@@ -31,6 +31,7 @@
 #include "solvers/variational/solve.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
@@ -44,14 +45,15 @@ struct Sample {
 };
 
 template <class P>
-Sample March(const P& problem, const InitialData& initial, const Grid& grid,
-             const std::vector<double>& exact_x, long long window, Path path) {
-  MarchOptions o;
+Sample March(const P& problem, const vivp::variational::InitialData& initial,
+             const Grid& grid, const std::vector<double>& exact_x,
+             long long window, Path path) {
+  vivp::variational::MarchOptions o;
   o.window_points = window;
   o.keep_trajectory = false;
   o.stabilize = false;
   o.solve.path = path;
-  MarchResult m;
+  vivp::variational::MarchResult m;
   Sample s;
   s.seconds =
       bench::MedianSeconds([&] { m = Solve(problem, initial, grid, o); }, 3);
@@ -106,7 +108,7 @@ std::vector<Row> Sweep(bool kepler, long long points,
                        const std::string& only_op = "", long long only_w = 0) {
   const std::vector<double> y = kKepler.Initial();
   const std::vector<double> k_end = kKepler.Exact(6 * M_PI);
-  const InitialData start =
+  const vivp::variational::InitialData start =
       kepler ? InitialData{{y[0], y[1]}, {y[2], y[3]}}
              : InitialData{{kAnharmonic.x0}, {kAnharmonic.v0}};
   const std::vector<double> exact =

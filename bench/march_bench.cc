@@ -23,6 +23,7 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
@@ -69,8 +70,8 @@ Grid FixedStep(long long points, double dt) {
   return g;
 }
 
-Sample March(const NamedProblem& p, const Grid& g, long long window,
-             int repeats) {
+Sample March(const vivp::studies::NamedProblem& p, const Grid& g,
+             long long window, int repeats) {
   MarchOptions o;
   o.window_points = window;
   o.keep_trajectory = false;
@@ -89,7 +90,8 @@ Sample March(const NamedProblem& p, const Grid& g, long long window,
   return s;
 }
 
-Sample Global(const NamedProblem& p, const Grid& g, int repeats) {
+Sample Global(const vivp::studies::NamedProblem& p, const Grid& g,
+              int repeats) {
   SolveOptions o;
   o.newton.max_iterations = 20;
   IvpSolution<double> sol;
@@ -114,7 +116,7 @@ void WindowTable() {
   std::printf("%-10s %6s %12s %10s %6s %9s\n", "problem", "W", "points/s",
               "err x(T)", "fact.", "fallbacks");
   for (const Case& c : kCases) {
-    const NamedProblem& p = FindProblem(c.name);
+    const vivp::studies::NamedProblem& p = vivp::studies::FindProblem(c.name);
     for (long long w : {16, 24, 32, 48, 64, 128, 256}) {
       const Sample s =
           InChild([&] { return March(p, FixedStep(n, c.dt), w, 3); });
@@ -134,7 +136,7 @@ void ThroughputTable() {
               "Nt", "T", "march pts/s", "err x(T)", "peak MB", "global pts/s",
               "err x(T)", "peak MB");
   for (const Case& c : kCases) {
-    const NamedProblem& p = FindProblem(c.name);
+    const vivp::studies::NamedProblem& p = vivp::studies::FindProblem(c.name);
     const bool linear = std::string(c.name) == "damped";
     for (long long n = 1 << 10; n <= (1 << 22); n *= 4) {
       const Grid g = FixedStep(n, c.dt);

@@ -48,7 +48,7 @@ int main() {
     for (int i = 0; i < kNodes; ++i) {
       double z[4];
       z_at(i, z);
-      const auto g = vivp::ad::Gradient<double, 4>(
+      const auto g = vivp::autodiff::Gradient<double, 4>(
           [](const auto* s) {
             using T = std::decay_t<decltype(*s)>;
             return DampedDensity(s, [](double c) { return T(c); });
@@ -73,7 +73,7 @@ int main() {
     for (int i = 0; i < kNodes; ++i) {
       double z[4];
       z_at(i, z);
-      const auto h = vivp::ad::Hessian<double, 4>(
+      const auto h = vivp::autodiff::Hessian<double, 4>(
           [](const auto* s) {
             using T = std::decay_t<decltype(*s)>;
             return DampedDensity(s, [](double c) { return T(c); });
@@ -92,8 +92,8 @@ int main() {
         s[k] = Nested(Jet4(z[k], k));
         s[k].v[k] = Jet4(1.0);
       }
-      const Nested f =
-          DampedDensity(s, [](double c) { return vivp::Lift<Nested>(c); });
+      const Nested f = DampedDensity(
+          s, [](double c) { return vivp::autodiff::Lift<Nested>(c); });
       sink += f.v[1].v[1];
     }
   });

@@ -16,9 +16,11 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 int main() {
-  const NamedProblem& p = FindProblem("anharmonic");
+  const vivp::studies::NamedProblem& p =
+      vivp::studies::FindProblem("anharmonic");
   const double t_end = 10.0;
   const double exact = p.exact(t_end).x[0];
   std::printf(

@@ -17,7 +17,7 @@
 
 #include "studies/bench_problems.h"
 
-using namespace vivp::steppers;
+using namespace vivp::studies;
 
 namespace {
 
@@ -27,7 +27,7 @@ constexpr double kTargets[] = {1e-4, 1e-8, 1e-12};
 // that reaches it, fastest first.
 using Cheapest = std::vector<std::vector<WorkPoint>>;
 
-Cheapest Table(const BenchProblem& p, double budget) {
+Cheapest Table(const vivp::studies::BenchProblem& p, double budget) {
   Cheapest all;
   std::printf("\n## %s (reference: %s)\n", p.description.c_str(),
               p.reference.c_str());
@@ -45,9 +45,9 @@ Cheapest Table(const BenchProblem& p, double budget) {
           w.status.c_str());
   }
   for (double target : kTargets) {
-    std::vector<WorkPoint> best;
+    std::vector<vivp::studies::WorkPoint> best;
     for (const auto& [m, rows] : sweeps) {
-      const WorkPoint* cheapest = nullptr;
+      const vivp::studies::WorkPoint* cheapest = nullptr;
       for (const auto& w : rows)
         if (w.status == "ok" && w.error <= target &&
             (!cheapest || w.seconds < cheapest->seconds))
@@ -76,7 +76,7 @@ Cheapest Table(const BenchProblem& p, double budget) {
 // One Markdown table: a row per method, a column per target; a cell is the
 // cheapest configuration (steps, or tolerance for adaptive methods), its
 // median time and its ratio to the fastest method at that target.
-void Markdown(const BenchProblem& p, const Cheapest& all) {
+void Markdown(const vivp::studies::BenchProblem& p, const Cheapest& all) {
   std::printf("\n%s (reference: %s)\n\n| method |", p.description.c_str(),
               p.reference.c_str());
   for (double t : kTargets) std::printf(" error %.0e |", t);
@@ -120,10 +120,10 @@ int main(int argc, char** argv) {
       budget);
   std::vector<Cheapest> results;
   for (const auto& n : names)
-    results.push_back(Table(FindBenchProblem(n), budget));
+    results.push_back(Table(vivp::studies::FindBenchProblem(n), budget));
   std::printf(
       "\n# Markdown: cheapest configuration per method and target"
       " (\"—\": not reached within the budget)\n");
   for (std::size_t i = 0; i < names.size(); ++i)
-    Markdown(FindBenchProblem(names[i]), results[i]);
+    Markdown(vivp::studies::FindBenchProblem(names[i]), results[i]);
 }

@@ -11,11 +11,13 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
 void PathTable() {
-  const NamedProblem& p = FindProblem("anharmonic");
+  const vivp::studies::NamedProblem& p =
+      vivp::studies::FindProblem("anharmonic");
   const double exact = p.exact(1.0).x[0];
   std::printf(
       "# anharmonic, SBP42, t in [0, 1]: the three paths (median of 3 runs)\n");
@@ -47,7 +49,7 @@ void LinearCost() {
   std::printf("%-10s %9s %5s %10s %12s %14s\n", "problem", "Nt", "it",
               "seconds", "s/iteration", "t/t(2^16)");
   for (const char* name : {"damped", "anharmonic"}) {
-    const NamedProblem& p = FindProblem(name);
+    const vivp::studies::NamedProblem& p = vivp::studies::FindProblem(name);
     double t16 = 0;
     for (long long n = 1 << 10; n <= (1 << 20); n *= 4) {
       Grid g;

@@ -23,6 +23,7 @@
 #include "solvers/variational/march.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
@@ -49,18 +50,18 @@ struct Ratios {
 };
 
 template <class P>
-void Collect(const P& problem, const InitialData& init, double t_end,
-             const std::string& op, bool tolerance, Ratios& r) {
+void Collect(const P& problem, const vivp::variational::InitialData& init,
+             double t_end, const std::string& op, bool tolerance, Ratios& r) {
   constexpr int d = P::kDim;
   Predictor<P> exact(problem, 2);
-  MarchOptions o;
+  vivp::variational::MarchOptions o;
   o.keep_trajectory = false;
   o.stabilize = false;
   // SBP21's last node has a first-order velocity: under error control its
   // step scales like the tolerance, and 1e-6 would take 10^8 nodes here.
   const double level = op == "sbp21" ? 1e-4 : 1e-6;
   if (tolerance) o.tolerance = {level, level};
-  o.window_observer = [&](const WindowSample& s) {
+  o.window_observer = [&](const vivp::variational::WindowSample& s) {
     std::vector<double> tau(s.points), xs(s.points * d), vs(s.points * d);
     for (int i = 0; i < s.points; ++i) tau[i] = s.dt * double(i);
     exact.Run(s.x0, s.v0, tau.data(), s.points, 1e-15, 1e-15, xs.data(),
@@ -90,7 +91,7 @@ void Collect(const P& problem, const InitialData& init, double t_end,
     if (est_v > floor_v) r.handoff_v.push_back(hv / est_v);
   };
   Grid g{.op = op, .points = 4097, .t_end = t_end};
-  const MarchResult m = MarchIvp(problem, init, g, o);
+  const vivp::variational::MarchResult m = MarchIvp(problem, init, g, o);
   if (!m.status.converged)
     std::printf("# %s, %s: %s\n", op.c_str(),
                 tolerance ? "tolerance" : "uniform", m.status.reason.c_str());

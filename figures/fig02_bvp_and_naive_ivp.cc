@@ -36,7 +36,8 @@ Eigen::VectorXd SolveBvp(const vivp::sbp::Operator<double>& d, double m,
 int main(int argc, char** argv) {
   using namespace vivp::figures;
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const vivp::NamedProblem& ff = vivp::FindProblem("freefall");
+  const vivp::studies::NamedProblem& ff =
+      vivp::studies::FindProblem("freefall");
   const vivp::problems::FreeFall p;
   const auto d = vivp::sbp::MakeOperator<double>("sbp21", 32);
   const Eigen::VectorXd x = SolveBvp(d, p.m, p.g, p.x0, ff.exact(1.0).x[0]);
@@ -48,8 +49,8 @@ int main(int argc, char** argv) {
   for (int i = 0; i < d.points(); ++i)
     bvp.series.back().rows.push_back({d.t(i), x[i]});
 
-  vivp::SolveOptions options;
-  options.path = vivp::Path::kFullNewton;
+  vivp::variational::SolveOptions options;
+  options.path = vivp::variational::Path::kFullNewton;
   const auto naive =
       ff.solve({.op = "sbp21", .points = 32, .sigma0 = 0.0}, options);
   if (!naive.status.converged)

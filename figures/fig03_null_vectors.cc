@@ -10,7 +10,7 @@
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const auto d = vivp::sbp::MakeOperator<double>("sbp21", 32);
-  const vivp::Spectrum s = vivp::AnalyzeSpectrum(d.DenseD());
-  std::cout << vivp::figures::NullVectorFigure(s, "SBP21", 32, dir).string()
+  const vivp::linalg::Spectrum s = vivp::linalg::AnalyzeSpectrum(d.DenseD());
+  std::cout << vivp::report::NullVectorFigure(s, "SBP21", 32, dir).string()
             << "\n";
 }

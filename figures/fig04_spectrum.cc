@@ -12,9 +12,10 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const auto d = vivp::sbp::MakeOperator<double>("sbp21", 32);
   const vivp::sbp::RegularizedOperator<double> dbar(d, -1.0);
-  const vivp::Spectrum sd = vivp::AnalyzeSpectrum(d.DenseD());
-  const vivp::Spectrum sdbar = vivp::AnalyzeSpectrum(dbar.AffineMatrix(1.0));
+  const vivp::linalg::Spectrum sd = vivp::linalg::AnalyzeSpectrum(d.DenseD());
+  const vivp::linalg::Spectrum sdbar =
+      vivp::linalg::AnalyzeSpectrum(dbar.AffineMatrix(1.0));
   std::cout
-      << vivp::figures::SpectrumFigure(sd, sdbar, "SBP21", 32, dir).string()
+      << vivp::report::SpectrumFigure(sd, sdbar, "SBP21", 32, dir).string()
       << "\n";
 }

@@ -11,7 +11,8 @@
 int main(int argc, char** argv) {
   using namespace vivp::figures;
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const vivp::NamedProblem& damped = vivp::FindProblem("damped");
+  const vivp::studies::NamedProblem& damped =
+      vivp::studies::FindProblem("damped");
   const auto exact = [&](double t) { return damped.exact(t).x[0]; };
   const double t2 = 204.8, t_late = 190.0;
   const auto s = LateTimeDamped(2048);

@@ -11,7 +11,8 @@
 int main(int argc, char** argv) {
   using namespace vivp::figures;
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const vivp::NamedProblem& damped = vivp::FindProblem("damped");
+  const vivp::studies::NamedProblem& damped =
+      vivp::studies::FindProblem("damped");
   const vivp::problems::DampedOscillator p;
   Panel energy{"energy of the damped oscillator, SBP42",
                "t",

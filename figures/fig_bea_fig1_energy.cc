@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   for (int n = 0; n < dev.t.size(); ++n)
     energy.push_back({dev.t(n), dev.deviation(n, 0), dev.deviation(n, 1),
                       dev.deviation(n, 2)});
-  vivp::plot::Figure fig(dir, "fig_bea_fig1_energy", 1200, 500);
+  vivp::report::Figure fig(dir, "fig_bea_fig1_energy", 1200, 500);
   const auto p = fig.Data("path", path, "x1 x2");
   const auto e = fig.Data("energy", energy, "t dH0 dH2 dH4");
   fig.script()

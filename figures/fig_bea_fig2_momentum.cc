@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   for (int n = 0; n < dev.t.size(); ++n)
     energy.push_back({dev.t(n), dev.deviation(n, 3), dev.deviation(n, 4),
                       dev.deviation(n, 5)});
-  vivp::plot::Figure fig(dir, "fig_bea_fig2_momentum", 1200, 500);
+  vivp::report::Figure fig(dir, "fig_bea_fig2_momentum", 1200, 500);
   const auto p = fig.Data("path", path, "x1 x2");
   const auto e = fig.Data("momentum", energy, "t dI0 dI2 dI4");
   fig.script()

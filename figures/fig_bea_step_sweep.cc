@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     row.push_back(four.rows[k].max_deviation[5]);  // I4
     rows.push_back(row);
   }
-  vivp::plot::Figure fig(dir, "fig_bea_step_sweep", 900, 650);
+  vivp::report::Figure fig(dir, "fig_bea_step_sweep", 900, 650);
   const auto d = fig.Data("sweep", rows, "h H0 H2 H4 I0 I2 I4 H4_d4 I4_d4");
   auto title = [](const std::string& name, double slope) {
     char buf[64];

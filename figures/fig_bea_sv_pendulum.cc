@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     v.insert(v.end(), row.max_deviation.begin(), row.max_deviation.end());
     rows.push_back(v);
   }
-  vivp::plot::Figure fig(dir, "fig_bea_sv_pendulum", 800, 600);
+  vivp::report::Figure fig(dir, "fig_bea_sv_pendulum", 800, 600);
   const auto d = fig.Data("sweep", rows, "h H0 H2 H4");
   fig.script() << "set logscale xy\nset xlabel 'h'\n"
                << "set ylabel 'max |H(t) - H(0)| over [0, 100]'\n"

@@ -21,7 +21,8 @@
 namespace {
 
 using namespace vivp;
-using steppers::WorkPoint;
+using namespace vivp::variational;
+using studies::WorkPoint;
 
 std::vector<std::vector<double>> Curve(const std::vector<WorkPoint>& sweep) {
   std::vector<std::vector<double>> rows;
@@ -38,8 +39,8 @@ double TimeTo(const std::vector<WorkPoint>& sweep, double target) {
 }
 
 void WorkPrecision(const std::filesystem::path& dir,
-                   const steppers::BenchProblem& p, double budget) {
-  plot::Figure fig(dir, "fig_error_control_wp_" + p.name, 900, 700);
+                   const studies::BenchProblem& p, double budget) {
+  report::Figure fig(dir, "fig_error_control_wp_" + p.name, 900, 700);
   std::string plots;
   auto add = [&](const std::string& method, const std::string& style,
                  const std::vector<WorkPoint>& sweep,
@@ -54,15 +55,15 @@ void WorkPrecision(const std::filesystem::path& dir,
   for (const char* m : {"variational_sbp42", "variational_sbp63",
                         "variational_sbp84", "variational_sbp84_uniform"})
     add(m, "linespoints lw 2 pt " + std::to_string(pt++),
-        steppers::Sweep(p, m, 5, budget));
+        studies::Sweep(p, m, 5, budget));
   add("odeint_dopri5", "linespoints lw 2 dt 2 pt 6",
-      steppers::Sweep(p, "odeint_dopri5", 5, budget));
+      studies::Sweep(p, "odeint_dopri5", 5, budget));
   std::string best;
   std::vector<WorkPoint> best_sweep;
   double best_time = std::numeric_limits<double>::infinity();
   for (const auto& m : p.methods) {
-    if (steppers::IsAdaptive(m) || m.rfind("variational_", 0) == 0) continue;
-    auto sweep = steppers::Sweep(p, m, 5, budget);
+    if (studies::IsAdaptive(m) || m.rfind("variational_", 0) == 0) continue;
+    auto sweep = studies::Sweep(p, m, 5, budget);
     const double t = TimeTo(sweep, 1e-8);
     if (t < best_time) {
       best_time = t;
@@ -84,8 +85,9 @@ void WorkPrecision(const std::filesystem::path& dir,
 }
 
 void Steps(const std::filesystem::path& dir) {
-  plot::Figure fig(dir, "fig_error_control_steps", 900, 650);
-  const NamedProblem& p = FindProblem("kepler_e09");
+  report::Figure fig(dir, "fig_error_control_steps", 900, 650);
+  const vivp::studies::NamedProblem& p =
+      vivp::studies::FindProblem("kepler_e09");
   std::string plots;
   int pt = 1;
   for (const char* op : {"sbp42", "sbp63", "sbp84"}) {
@@ -125,6 +127,6 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const double budget = argc > 2 ? std::atof(argv[2]) : 0.5;
   for (const char* name : {"kepler_e09", "anharmonic"})
-    WorkPrecision(dir, steppers::FindBenchProblem(name), budget);
+    WorkPrecision(dir, studies::FindBenchProblem(name), budget);
   Steps(dir);
 }

@@ -16,10 +16,10 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   std::vector<std::string> names(argv + std::min(argc, 2), argv + argc);
   if (names.empty())
-    for (const auto& p : vivp::Registry()) names.push_back(p.name);
+    for (const auto& p : vivp::studies::Registry()) names.push_back(p.name);
   try {
     for (const auto& name : names) {
-      const vivp::NamedProblem& p = vivp::FindProblem(name);
+      const vivp::studies::NamedProblem& p = vivp::studies::FindProblem(name);
       std::cout << vivp::figures::PathsFigure(dir, "problem_" + name + "_paths",
                                               name, p.description)
                        .string()

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "report/plot.h"
 #include "problems/kepler.h"
+#include "report/plot.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   const problems::Kepler kepler;
   const System system(kepler);
   const int per_orbit = 100, orbits = 1000;
-  vivp::plot::Figure fig(dir, "fig_steppers_energy");
+  vivp::report::Figure fig(dir, "fig_steppers_energy");
   std::string plots;
   for (const char* m :
        {"rk4", "verlet", "midpoint", "gauss2", "suzuki", "discrete_gradient"}) {

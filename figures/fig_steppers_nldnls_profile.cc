@@ -10,8 +10,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "report/plot.h"
 #include "problems/nldnls.h"
+#include "report/plot.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
 
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       1L, static_cast<long>(mid.seconds / (probe.seconds / probe_steps)));
   const Result dg = run("discrete_gradient", dg_steps);
   const Result ref = run("gauss3", static_cast<long>(t_end / 0.01));
-  vivp::plot::Figure fig(dir, "fig_steppers_nldnls_profile");
+  vivp::report::Figure fig(dir, "fig_steppers_nldnls_profile");
   auto profile = [&](const System::Vector& y) {
     std::vector<std::vector<double>> rows;
     for (int n = 0; n < Chain::kDim; ++n)

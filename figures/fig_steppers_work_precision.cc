@@ -12,11 +12,11 @@
 #include "studies/bench_problems.h"
 
 int main(int argc, char** argv) {
-  using namespace vivp::steppers;
+  using namespace vivp::studies;
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
   const double budget = argc > 2 ? std::atof(argv[2]) : 0.1;
-  for (const BenchProblem& p : BenchProblems()) {
-    vivp::plot::Figure fig(dir, "fig_steppers_wp_" + p.name);
+  for (const vivp::studies::BenchProblem& p : vivp::studies::BenchProblems()) {
+    vivp::report::Figure fig(dir, "fig_steppers_wp_" + p.name);
     std::string plots;
     int style = 1;
     for (const auto& m : p.methods) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/fit.h"
+#include "core/linalg/fit.h"
 #include "report/plot.h"
 
 namespace vivp::figures {
@@ -16,11 +16,11 @@ std::string Fixed(double v, int digits = 2) {
   return buf;
 }
 
-double Error(const ConvergenceRow& r, Quantity q) {
+double Error(const studies::ConvergenceRow& r, Quantity q) {
   return q == Quantity::kValue ? r.err_x : r.err_v;
 }
 
-double Order(const ConvergenceStudy& s, Quantity q) {
+double Order(const studies::ConvergenceStudy& s, Quantity q) {
   return q == Quantity::kValue ? s.orders.x : s.orders.v;
 }
 
@@ -30,7 +30,7 @@ std::filesystem::path PanelFigure(const std::filesystem::path& dir,
                                   const std::string& stem,
                                   const std::vector<Panel>& panels) {
   const int n = static_cast<int>(panels.size());
-  plot::Figure fig(dir, stem, n == 1 ? 900 : 750 * n, 600);
+  report::Figure fig(dir, stem, n == 1 ? 900 : 750 * n, 600);
   auto& s = fig.script();
   s << "set multiplot\n";
   for (int p = 0; p < n; ++p) {
@@ -73,7 +73,7 @@ Series Curve(const std::string& title, const std::function<double(double)>& f,
 }
 
 Series PathSeries(const std::string& title,
-                  const IvpSolution<double>::Matrix& path,
+                  const variational::IvpSolution<double>::Matrix& path,
                   const std::vector<double>& t, const std::string& with,
                   int c) {
   Series out{title, {}, with};
@@ -82,7 +82,8 @@ Series PathSeries(const std::string& title,
   return out;
 }
 
-Panel PathsPanel(const NamedProblem& problem, const IvpSolution<double>& s,
+Panel PathsPanel(const studies::NamedProblem& problem,
+                 const variational::IvpSolution<double>& s,
                  const std::string& title) {
   Panel panel{title, "t", "x(t)", {}, ""};
   panel.series.push_back(Curve(
@@ -97,19 +98,20 @@ std::filesystem::path PathsFigure(const std::filesystem::path& dir,
                                   const std::string& stem,
                                   const std::string& problem_name,
                                   const std::string& title) {
-  const NamedProblem& problem = FindProblem(problem_name);
-  SolveOptions options;
-  options.path = Path::kFullNewton;
+  const studies::NamedProblem& problem = studies::FindProblem(problem_name);
+  variational::SolveOptions options;
+  options.path = variational::Path::kFullNewton;
   const auto s = problem.solve({.op = "sbp21", .points = 32}, options);
   if (!s.status.converged)
     throw std::runtime_error(problem_name + ": " + s.status.reason);
   return PanelFigure(dir, stem, {PathsPanel(problem, s, title)});
 }
 
-ConvergenceStudy PaperStudy(const std::string& problem_name,
-                            const std::string& op) {
-  return RunConvergence(FindProblem(problem_name), {.op = op, .points = 16},
-                        {16, 32, 64, 128, 256, 512}, {});
+studies::ConvergenceStudy PaperStudy(const std::string& problem_name,
+                                     const std::string& op) {
+  return RunConvergence(studies::FindProblem(problem_name),
+                        {.op = op, .points = 16}, {16, 32, 64, 128, 256, 512},
+                        {});
 }
 
 std::filesystem::path ConvergenceFigure(
@@ -145,7 +147,7 @@ std::filesystem::path ConvergenceFigure(
       panel.series.push_back(points);
       if (!cs.fit) continue;
       // Same fit and round-off floor as RunConvergence, for the prefactor.
-      const PowerLawFit fit = FitPowerLaw(dt, err, 1e-13);
+      const linalg::PowerLawFit fit = linalg::FitPowerLaw(dt, err, 1e-13);
       if (!(fit.points_used >= 2)) continue;
       Series line{
           cs.label + " fit {/Symbol D}t^{" + Fixed(Order(cs.study, q)) + "}",
@@ -160,10 +162,10 @@ std::filesystem::path ConvergenceFigure(
   return PanelFigure(dir, stem, panels);
 }
 
-IvpSolution<double> LateTimeDamped(long long points) {
-  SolveOptions options;
-  options.path = Path::kFullNewton;
-  auto s = FindProblem("damped").solve(
+variational::IvpSolution<double> LateTimeDamped(long long points) {
+  variational::SolveOptions options;
+  options.path = variational::Path::kFullNewton;
+  auto s = studies::FindProblem("damped").solve(
       {.op = "sbp42", .points = points, .t_end = 204.8}, options);
   if (!s.status.converged)
     throw std::runtime_error("late-time damped oscillator, Nt = " +

@@ -57,12 +57,13 @@ Series Curve(const std::string& title, const std::function<double(double)>& f,
 
 // Component c of a path (x1 or x2 of the solution) against t.
 Series PathSeries(const std::string& title,
-                  const IvpSolution<double>::Matrix& path,
+                  const variational::IvpSolution<double>::Matrix& path,
                   const std::vector<double>& t, const std::string& with,
                   int c = 0);
 
 // x1 (red circles), x2 (blue crosses) and the exact x (gray line).
-Panel PathsPanel(const NamedProblem& problem, const IvpSolution<double>& s,
+Panel PathsPanel(const studies::NamedProblem& problem,
+                 const variational::IvpSolution<double>& s,
                  const std::string& title);
 
 // The paper's path figures (5, 8, 10, 12): regularized SBP21, Nt = 32 on
@@ -73,14 +74,14 @@ std::filesystem::path PathsFigure(const std::filesystem::path& dir,
                                   const std::string& title);
 
 // The paper's convergence study: Nt = 16, 32, ..., 512 on [0, 1].
-ConvergenceStudy PaperStudy(const std::string& problem_name,
-                            const std::string& op);
+studies::ConvergenceStudy PaperStudy(const std::string& problem_name,
+                                     const std::string& op);
 
 enum class Quantity { kValue, kDerivative };
 
 struct ConvergenceSeries {
   std::string label;  // "SBP21": blue crosses; the second series red circles
-  ConvergenceStudy study;
+  studies::ConvergenceStudy study;
   bool fit = true;  // draw the power-law fit (gray) with its slope in the key
 };
 
@@ -93,7 +94,7 @@ std::filesystem::path ConvergenceFigure(
 
 // The late-time damped oscillator of Figs. 14-15: SBP42 on [0, 204.8], the
 // full doubled system (x1 = x2 is then measured, not imposed).
-IvpSolution<double> LateTimeDamped(long long points);
+variational::IvpSolution<double> LateTimeDamped(long long points);
 
 // Figs. 9, 11, 13: value and derivative for SBP21 and SBP42, with fits.
 std::filesystem::path OperatorPairConvergenceFigure(

@@ -8,7 +8,7 @@ const bool registered = vivp::Register<vivp::problems::FreeFall>(
         .name = "freefall",
         .description = "free fall, L = ½ẋ² − x (eq. 24)",
         .initial = {{1.0}, {0.3}},
-        .exact = vivp::detail::Scalar<vivp::problems::FreeFall>,
+        .exact = vivp::ScalarExact<vivp::problems::FreeFall>,
     },
     vivp::kNotInScenes);
 }  // namespace

@@ -12,8 +12,8 @@ const bool registered = vivp::Register<Kepler>(
         .name = "kepler",
         .description =
             "planar Kepler e = 0.6 from pericentre (d = 2, period 2π)",
-        .initial = vivp::detail::CanonicalInitial(Kepler{}),
-        .exact = vivp::detail::Canonical<Kepler>,
+        .initial = vivp::CanonicalInitial(Kepler{}),
+        .exact = vivp::CanonicalExact<Kepler>,
     },
     vivp::kNotInScenes);
 
@@ -30,7 +30,7 @@ const bool eccentric = vivp::Register<EccentricKepler>(
             "planar Kepler e = 0.9 from pericentre, x(0) = (0.1, 0), "
             "ẋ(0) = (0, √19) (d = 2, period 2π)",
         .initial = {{0.1, 0.0}, {0.0, std::sqrt(19.0)}},
-        .exact = vivp::detail::Canonical<EccentricKepler>,
+        .exact = vivp::CanonicalExact<EccentricKepler>,
     },
     vivp::kNotInScenes);
 }  // namespace

@@ -9,8 +9,8 @@ const bool registered = vivp::Register<Pendulum>(
     {
         .name = "pendulum",
         .description = "pendulum, L = ½ẋ² + cos x, x(0) = 0, ẋ(0) = 1",
-        .initial = vivp::detail::CanonicalInitial(Pendulum{}),
-        .exact = vivp::detail::Canonical<Pendulum>,
+        .initial = vivp::CanonicalInitial(Pendulum{}),
+        .exact = vivp::CanonicalExact<Pendulum>,
     },
     vivp::kNotInScenes);
 }  // namespace

@@ -35,18 +35,24 @@
 
 namespace vivp {
 
+// Closed forms for Registration::exact (studies/registry_entry.h).
+using studies::CanonicalExact;
+using studies::CanonicalInitial;
+using studies::ExactState;
+using studies::ScalarExact;
+
 // Every field has a default, so that a registration names only what it
 // has (and -Wmissing-field-initializers stays quiet).
 template <class L>
 struct Registration {
   std::string name = {};         // the name on the command line and in scenes
   std::string description = {};  // one line, shown by `vivp converge`
-  InitialData initial = {};      // of `vivp converge` and the figures
+  variational::InitialData initial = {};  // of `vivp converge` and the figures
   // Members a scene may set (`type = "NAME"` with `member = value`).
   std::vector<std::pair<std::string, double L::*>> parameters = {};
   // The closed form, if there is one: position and velocity at t for the
   // initial data above.
-  std::function<ExactState(const L&, double)> exact = {};
+  std::function<studies::ExactState(const L&, double)> exact = {};
   // The span of `vivp bench` (from t = 0), where L has a Hamiltonian form.
   double bench_t_end = 10.0;
 };
@@ -64,26 +70,26 @@ namespace detail {
 template <class L>
 void AddToBench(const Registration<L>& r) {
   constexpr int d = L::kDim;
-  std::function<steppers::BenchProblem()> make;
+  std::function<studies::BenchProblem()> make;
   if constexpr (action::HasLambda<L>) {
-    make = []() -> steppers::BenchProblem {
+    make = []() -> studies::BenchProblem {
       throw std::domain_error("L has a dissipative term Λ");
     };
-  } else if constexpr (d > steppers::kMaxBenchDim) {
-    make = []() -> steppers::BenchProblem {
+  } else if constexpr (d > studies::kMaxBenchDim) {
+    make = []() -> studies::BenchProblem {
       throw std::domain_error("the bench is compiled for 1 to 3 coordinates");
     };
   } else {
     make = [l = L{}, name = r.name, init = r.initial, t = r.bench_t_end] {
-      const LegendreForm<d> form = FindLegendreForm(l, init);
+      const studies::LegendreForm<d> form = studies::FindLegendreForm(l, init);
       if (form.separable)
-        return steppers::LagrangianBenchProblem<d, true>(
-            name, steppers::ErasedHamiltonian<d, true>::Of(l, form, init), t);
-      return steppers::LagrangianBenchProblem<d, false>(
-          name, steppers::ErasedHamiltonian<d, false>::Of(l, form, init), t);
+        return studies::LagrangianBenchProblem<d, true>(
+            name, studies::ErasedHamiltonian<d, true>::Of(l, form, init), t);
+      return studies::LagrangianBenchProblem<d, false>(
+          name, studies::ErasedHamiltonian<d, false>::Of(l, form, init), t);
     };
   }
-  steppers::AddBenchCandidate(r.name, std::move(make));
+  studies::AddBenchCandidate(r.name, std::move(make));
 }
 
 }  // namespace detail
@@ -95,11 +101,11 @@ bool Register(Registration<L> r, NotInScenes) {
   detail::AddToBench(r);
   const L problem{};
   if (r.exact)
-    AddProblem(
-        detail::Entry(r.name, r.description, problem, r.initial, r.exact));
+    studies::AddProblem(studies::detail::Entry(r.name, r.description, problem,
+                                               r.initial, r.exact));
   else
-    AddProblem(
-        detail::EntryWithReference(r.name, r.description, problem, r.initial));
+    studies::AddProblem(studies::detail::EntryWithReference(
+        r.name, r.description, problem, r.initial));
   return true;
 }
 

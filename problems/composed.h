@@ -4,7 +4,7 @@
 //   using namespace vivp::problems;
 //   Composed<1> damped{{effects::Kinetic{0.5}, effects::Spring{1.0},
 //                       effects::Damping{0.00071}}};
-//   auto sol = vivp::SolveIvp(damped, {{1.0}, {0.0}}, grid);
+//   auto sol = vivp::variational::SolveIvp(damped, {{1.0}, {0.0}}, grid);
 //
 // L is the sum of the effects' Lagrangian terms and Λ the sum of their Λ
 // terms. The solver differentiates a composition term by term

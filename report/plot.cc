@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace vivp::plot {
+namespace vivp::report {
 
 namespace fs = std::filesystem;
 
@@ -73,4 +73,4 @@ fs::path Figure::Render() {
   return png;
 }
 
-}  // namespace vivp::plot
+}  // namespace vivp::report

@@ -2,7 +2,7 @@
 // script that draws it (.gp), and the PNG. Anyone can edit the script and
 // re-run `gnuplot STEM.gp` in the directory.
 //
-//   vivp::plot::Figure fig(dir, "fig04_spectrum");
+//   vivp::report::Figure fig(dir, "fig04_spectrum");
 //   auto d = fig.Data("D", {{re, im}, ...}, "re im");
 //   fig.script() << "plot '" << d << "' using 1:2 with points\n";
 //   fig.Render();  // writes fig04_spectrum.gp, runs gnuplot, checks the PNG
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace vivp::plot {
+namespace vivp::report {
 
 class Figure {
  public:
@@ -42,4 +42,4 @@ class Figure {
   std::ostringstream script_;
 };
 
-}  // namespace vivp::plot
+}  // namespace vivp::report

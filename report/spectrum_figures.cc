@@ -6,7 +6,7 @@
 
 #include "report/plot.h"
 
-namespace vivp::figures {
+namespace vivp::report {
 namespace {
 
 std::vector<std::vector<double>> ComplexRows(
@@ -25,10 +25,10 @@ std::vector<std::vector<double>> IndexRows(const Eigen::VectorXd& v) {
 
 }  // namespace
 
-std::filesystem::path NullVectorFigure(const Spectrum& d,
+std::filesystem::path NullVectorFigure(const linalg::Spectrum& d,
                                        const std::string& op_name, int points,
                                        const std::filesystem::path& dir) {
-  plot::Figure fig(dir, "fig03_null_vectors");
+  report::Figure fig(dir, "fig03_null_vectors");
   const auto right = fig.Data("right", IndexRows(d.right_null_vector), "i v");
   const auto left = fig.Data("left", IndexRows(d.left_null_vector), "i v");
   fig.script() << "set title 'Null vectors of D (" << op_name
@@ -44,10 +44,11 @@ std::filesystem::path NullVectorFigure(const Spectrum& d,
   return fig.Render();
 }
 
-std::filesystem::path SpectrumFigure(const Spectrum& d, const Spectrum& dbar,
+std::filesystem::path SpectrumFigure(const linalg::Spectrum& d,
+                                     const linalg::Spectrum& dbar,
                                      const std::string& op_name, int points,
                                      const std::filesystem::path& dir) {
-  plot::Figure fig(dir, "fig04_spectrum", 1200, 600);
+  report::Figure fig(dir, "fig04_spectrum", 1200, 600);
   const auto dfile = fig.Data("D", ComplexRows(d.eigenvalues), "re im");
   const auto dbarfile =
       fig.Data("Dbar", ComplexRows(dbar.eigenvalues), "re im");
@@ -82,4 +83,4 @@ std::filesystem::path SpectrumFigure(const Spectrum& d, const Spectrum& dbar,
   return fig.Render();
 }
 
-}  // namespace vivp::figures
+}  // namespace vivp::report

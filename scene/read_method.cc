@@ -23,7 +23,7 @@ void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
              expected);
     return x;
   };
-  Tolerance tol;
+  variational::Tolerance tol;
   if (const toml::table* tt = n.as_table()) {
     r.CheckKeys(*tt, "tolerance", {"absolute", "relative"});
     if (const toml::node* a = tt->get("absolute"))
@@ -51,11 +51,13 @@ void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
 // tolerance marches in 48 for Newton), else 0 for one global solve.
 void ResolveWindow(const TomlReader& r, const toml::table& method, Scene& s) {
   const toml::node* slab = method.get("slab_points");
-  const SolveRequest request{.path = ParseSolver(s.method.solver),
-                             .op = s.method.op,
-                             .window_points = slab ? s.method.slab_points : -1,
-                             .tolerance = s.method.tolerance.enabled()};
-  const Refusal refusal = CheckSolveRequest(request, Spelling::kScene);
+  const variational::SolveRequest request{
+      .path = variational::ParseSolver(s.method.solver),
+      .op = s.method.op,
+      .window_points = slab ? s.method.slab_points : -1,
+      .tolerance = s.method.tolerance.enabled()};
+  const variational::Refusal refusal =
+      CheckSolveRequest(request, variational::Spelling::kScene);
   // At the window when it is given, else at the solver that has no
   // default window.
   const toml::node* at = slab ? slab : method.get("solver");
@@ -89,7 +91,7 @@ void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s) {
   if (const toml::node* n = t.get("operator"))
     s.method.op = r.Choice(*n, "operator", ops);
   if (const toml::node* n = t.get("solver"))
-    s.method.solver = r.Choice(*n, "solver", SolverNames());
+    s.method.solver = r.Choice(*n, "solver", variational::SolverNames());
   if (const toml::node* n = t.get("slab_points"))
     s.method.slab_points =
         r.Whole(*n, "slab_points", 0,

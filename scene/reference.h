@@ -115,11 +115,11 @@ class OdeReference : public Reference {
   }
 
   std::string description() const override {
-    return vivp::OdeReference<P>::Description();
+    return vivp::variational::OdeReference<P>::Description();
   }
 
  private:
-  vivp::OdeReference<P> ode_;
+  vivp::variational::OdeReference<P> ode_;
 };
 
 }  // namespace detail

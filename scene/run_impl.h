@@ -161,7 +161,7 @@ class NodeEmitter {
       z[c] = x[c];
       z[d + c] = v[c];
     }
-    const auto [lagrangian, grad] = ad::Gradient<double, 2 * d>(
+    const auto [lagrangian, grad] = autodiff::Gradient<double, 2 * d>(
         [&](const auto* s) { return problem_(s, s + d); }, z);
     energy_ = -lagrangian;
     for (int c = 0; c < d; ++c) {
@@ -181,14 +181,17 @@ class NodeEmitter {
 
 // One global solve of the whole span: the nodes go to `emit` afterwards.
 template <class P>
-void SolveGlobal(const P& problem, const Scene& s, const InitialData& initial,
-                 const Grid& grid, NodeEmitter<P>& emit, RunOutcome& out) {
+void SolveGlobal(const P& problem, const Scene& s,
+                 const variational::InitialData& initial,
+                 const variational::Grid& grid, NodeEmitter<P>& emit,
+                 RunOutcome& out) {
   constexpr int d = P::kDim;
   nlohmann::json& j = out.solver;
   const auto start = Clock::now();
-  SolveOptions options;
-  options.path = ParseSolver(s.method.solver);
-  const IvpSolution<double> sol = Solve(problem, initial, grid, options);
+  variational::SolveOptions options;
+  options.path = variational::ParseSolver(s.method.solver);
+  const variational::IvpSolution<double> sol =
+      Solve(problem, initial, grid, options);
   out.seconds = Since(start);
   out.converged = sol.status.converged;
   out.status = sol.status.converged ? "converged" : sol.status.reason;
@@ -214,44 +217,47 @@ void SolveGlobal(const P& problem, const Scene& s, const InitialData& initial,
 
 // The march's options from [method]: windows of slab_points, and the error
 // control of its tolerance when there is one (run_variational.cc).
-MarchOptions MarchOptionsFor(const Scene& s);
+variational::MarchOptions MarchOptionsFor(const Scene& s);
 // ", marched in windows of N points" and the error control, if any, for the
 // outcome's method.
-std::string MarchDescription(const Scene& s, const MarchOptions& options);
+std::string MarchDescription(const Scene& s,
+                             const variational::MarchOptions& options);
 // The march's status, counts and end state in the outcome (the time is the
 // caller's: it excludes the output).
-void RecordMarch(const MarchResult& r, const MarchOptions& options,
-                 RunOutcome& out);
+void RecordMarch(const variational::MarchResult& r,
+                 const variational::MarchOptions& options, RunOutcome& out);
 
 // A march in windows: each node goes to `emit` as it is accepted.
 template <class P>
-void SolveMarched(const P& problem, const Scene& s, const InitialData& initial,
-                  const Grid& grid, NodeEmitter<P>& emit, RunSink& sink,
-                  RunOutcome& out) {
+void SolveMarched(const P& problem, const Scene& s,
+                  const variational::InitialData& initial,
+                  const variational::Grid& grid, NodeEmitter<P>& emit,
+                  RunSink& sink, RunOutcome& out) {
   const auto start = Clock::now();
-  const MarchOptions options = MarchOptionsFor(s);
+  const variational::MarchOptions options = MarchOptionsFor(s);
   out.method += MarchDescription(s, options);
   long long index = 0;
   double output_seconds = 0;
   const double span = s.t_end - s.t_start;
-  const MarchResult r = Solve(problem, initial, grid, options,
-                              [&](double t, const double* x, const double* v) {
-                                const auto t0 = Clock::now();
-                                emit.Node(index++, t, x, v);
-                                sink.Progress((t - s.t_start) / span);
-                                output_seconds += Since(t0);
-                              });
+  const variational::MarchResult r =
+      Solve(problem, initial, grid, options,
+            [&](double t, const double* x, const double* v) {
+              const auto t0 = Clock::now();
+              emit.Node(index++, t, x, v);
+              sink.Progress((t - s.t_start) / span);
+              output_seconds += Since(t0);
+            });
   out.seconds = Since(start) - output_seconds;
   RecordMarch(r, options, out);
 }
 
 template <class P>
 RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
-  const Grid grid{.op = s.method.op,
-                  .points = s.points,
-                  .t_start = s.t_start,
-                  .t_end = s.t_end};
-  const InitialData initial{s.x0, s.v0};
+  const variational::Grid grid{.op = s.method.op,
+                               .points = s.points,
+                               .t_start = s.t_start,
+                               .t_end = s.t_end};
+  const variational::InitialData initial{s.x0, s.v0};
   NodeEmitter<P> emit(problem, s, sink);
   RunOutcome out;
   out.method = "variational, " + s.method.op + ", " + s.method.solver;

@@ -7,16 +7,17 @@
 
 namespace vivp::scene::detail {
 
-MarchOptions MarchOptionsFor(const Scene& s) {
-  MarchOptions options;
+variational::MarchOptions MarchOptionsFor(const Scene& s) {
+  variational::MarchOptions options;
   options.window_points = s.method.slab_points;
   options.keep_trajectory = false;
-  options.solve.path = ParseSolver(s.method.solver);
+  options.solve.path = variational::ParseSolver(s.method.solver);
   options.tolerance = s.method.tolerance;
   return options;
 }
 
-std::string MarchDescription(const Scene& s, const MarchOptions& options) {
+std::string MarchDescription(const Scene& s,
+                             const variational::MarchOptions& options) {
   std::string method = ", marched in windows of " +
                        std::to_string(s.method.slab_points) + " points";
   if (options.tolerance.enabled()) {
@@ -29,8 +30,8 @@ std::string MarchDescription(const Scene& s, const MarchOptions& options) {
   return method;
 }
 
-void RecordMarch(const MarchResult& r, const MarchOptions& options,
-                 RunOutcome& out) {
+void RecordMarch(const variational::MarchResult& r,
+                 const variational::MarchOptions& options, RunOutcome& out) {
   nlohmann::json& j = out.solver;
   out.converged = r.status.converged;
   out.status = r.status.converged ? "converged" : r.status.reason;

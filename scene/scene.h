@@ -70,7 +70,7 @@ struct Scene {
     // Error control (variational): the windows' steps are chosen so that
     // every returned node is within absolute + relative·|value| of the local
     // flow; [time] points is then not given.
-    Tolerance tolerance;
+    variational::Tolerance tolerance;
   } method;
   struct Output {
     std::vector<std::string> diagnostics;

@@ -7,7 +7,7 @@
 #include "studies/bench_problem_of.h"
 #include "studies/registry.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 template <int d, bool Separable>
 BenchProblem LagrangianBenchProblem(const std::string& name,
@@ -33,4 +33,4 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
 VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_INSTANCE)
 #undef VIVP_BENCH_LAGRANGIAN_INSTANCE
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

@@ -10,7 +10,7 @@
 #include "studies/bench_problems.h"
 #include "studies/erased_hamiltonian.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 // The largest number of coordinates the bench is compiled for.
 inline constexpr int kMaxBenchDim = 3;
@@ -32,4 +32,4 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
 VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_EXTERN)
 #undef VIVP_BENCH_LAGRANGIAN_EXTERN
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

@@ -14,7 +14,7 @@
 #include "studies/bench_problems.h"
 #include "studies/work_precision.h"
 
-namespace vivp::steppers::detail {
+namespace vivp::studies::detail {
 
 template <class Problem>
 BenchProblem MakeBenchProblem(std::string name, std::string description,
@@ -42,4 +42,4 @@ BenchProblem MakeBenchProblem(std::string name, std::string description,
   return b;
 }
 
-}  // namespace vivp::steppers::detail
+}  // namespace vivp::studies::detail

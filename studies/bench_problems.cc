@@ -18,7 +18,7 @@
 #include "studies/bench_problem_of.h"
 #include "studies/work_precision.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 namespace {
 
@@ -69,13 +69,13 @@ namespace detail {
 template <class Problem>
 std::vector<double> GaussReference(const Problem& problem, double t_end,
                                    long n) {
-  using System = HamiltonianSystem<Problem>;
+  using System = steppers::HamiltonianSystem<Problem>;
   const System system(problem);
-  RungeKutta<Problem> stepper(system, Gauss3());
+  steppers::RungeKutta<Problem> stepper(system, steppers::Gauss3());
   const auto init = problems::InitialState(problem);
   typename System::Vector y = System::Vector::Map(init.data());
-  const RunReport r = Integrate(stepper, y, t_end / n, n);
-  if (r.status != Status::kOk)
+  const steppers::RunReport r = Integrate(stepper, y, t_end / n, n);
+  if (r.status != steppers::Status::kOk)
     throw std::runtime_error("reference run failed: " + ToString(r.status));
   return std::vector<double>(y.data(), y.data() + y.size());
 }
@@ -189,4 +189,4 @@ std::vector<WorkPoint> Sweep(const BenchProblem& p, const std::string& method,
   return rows;
 }
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

@@ -18,7 +18,7 @@
 
 #include "studies/work_point.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 struct BenchProblem {
   std::string name, description, reference;
@@ -66,4 +66,4 @@ std::vector<WorkPoint> Sweep(const BenchProblem& p, const std::string& method,
                              int repeats, double budget_seconds,
                              double floor = 1e-13);
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

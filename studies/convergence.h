@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "core/fit.h"
+#include "core/linalg/fit.h"
 #include "solvers/variational/ivp_types.h"
 
-namespace vivp {
+namespace vivp::studies {
 
 struct ConvergenceRow {
   long long points = 0;
@@ -80,10 +80,10 @@ inline void FitOrders(ConvergenceStudy& study, double floor) {
     epc.push_back(r.err_p_corrected);
   }
   auto fit = [&](const std::vector<double>& step, ConvergenceOrders& o) {
-    o.x = FitPowerLaw(step, ex, floor).order;
-    o.v = FitPowerLaw(step, ev, floor).order;
-    o.x_corrected = FitPowerLaw(step, exc, floor).order;
-    o.p_corrected = FitPowerLaw(step, epc, floor).order;
+    o.x = linalg::FitPowerLaw(step, ex, floor).order;
+    o.v = linalg::FitPowerLaw(step, ev, floor).order;
+    o.x_corrected = linalg::FitPowerLaw(step, exc, floor).order;
+    o.p_corrected = linalg::FitPowerLaw(step, epc, floor).order;
   };
   fit(h, study.orders);
   fit(ht, study.orders_true_dt);
@@ -106,7 +106,7 @@ inline void FitTracking(ConvergenceStudy& study, double floor) {
       t.max_ratio =
           std::isnan(t.max_ratio) ? ratio : std::max(t.max_ratio, ratio);
     }
-    t.slope = FitPowerLaw(tol, err, floor).order;
+    t.slope = linalg::FitPowerLaw(tol, err, floor).order;
     return t;
   };
   study.tracking =
@@ -117,4 +117,4 @@ inline void FitTracking(ConvergenceStudy& study, double floor) {
       track([](const ConvergenceRow& r) { return r.max_error_v; });
 }
 
-}  // namespace vivp
+}  // namespace vivp::studies

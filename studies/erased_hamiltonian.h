@@ -14,7 +14,7 @@
 #include "core/autodiff/pointwise.h"
 #include "studies/legendre.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 template <int d, bool Separable>
 struct ErasedHamiltonian {
@@ -37,17 +37,17 @@ struct ErasedHamiltonian {
   // p0 = Mẋ0 + b(q0).
   template <class L>
   static ErasedHamiltonian Of(const L& l, const LegendreForm<d>& form,
-                              const InitialData& init) {
+                              const variational::InitialData& init) {
     auto h = [l, form](const auto* y) {
       return LegendreHamiltonian<Separable>(l, form, y, y + d);
     };
     ErasedHamiltonian e;
     e.value = [h](const double* y) { return double(h(y)); };
     e.gradient = [h](const double* y) {
-      return Vector(ad::Gradient<double, 2 * d>(h, y).second);
+      return Vector(autodiff::Gradient<double, 2 * d>(h, y).second);
     };
     e.hessian = [h](const double* y) {
-      return Matrix(ad::Hessian<double, 2 * d>(h, y).hessian);
+      return Matrix(autodiff::Hessian<double, 2 * d>(h, y).hessian);
     };
     double b[d];
     VectorPotential(l, init.x.data(), b);
@@ -62,4 +62,4 @@ struct ErasedHamiltonian {
   }
 };
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

@@ -23,7 +23,7 @@
 
 #include "solvers/variational/ivp_types.h"
 
-namespace vivp {
+namespace vivp::studies {
 
 template <int d>
 struct LegendreForm {
@@ -55,7 +55,8 @@ void VectorPotential(const L& l, const T* q, T* b) {
 
 // Throws std::domain_error naming what fails.
 template <class L>
-LegendreForm<L::kDim> FindLegendreForm(const L& l, const InitialData& init) {
+LegendreForm<L::kDim> FindLegendreForm(const L& l,
+                                       const variational::InitialData& init) {
   constexpr int d = L::kDim;
   using detail::AtUnitVelocity;
   auto mass_at = [&](const double* q) {
@@ -139,4 +140,4 @@ T LegendreHamiltonian(const L& l, const LegendreForm<L::kDim>& f, const T* q,
   return h;
 }
 
-}  // namespace vivp
+}  // namespace vivp::studies

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace vivp {
+namespace vivp::studies {
 
 namespace {
 
@@ -68,7 +68,7 @@ auto Guarded(F&& run, OnFailure&& on_failure) -> decltype(run()) {
 }
 
 // The counts and status of a march, into its row.
-void FromMarch(const MarchResult& m, ConvergenceRow& r) {
+void FromMarch(const variational::MarchResult& m, ConvergenceRow& r) {
   r.error_estimate = m.error_estimate;
   r.iterations = m.iterations;
   r.fallbacks = m.fallbacks;
@@ -81,19 +81,21 @@ void FromMarch(const MarchResult& m, ConvergenceRow& r) {
 
 }  // namespace
 
-ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
-                        const SolveOptions& options, long long slab_points,
-                        const ExactState& exact) {
-  MarchOptions mo;
+ConvergenceRow MarchRow(const NamedProblem& problem,
+                        const variational::Grid& grid,
+                        const variational::SolveOptions& options,
+                        long long slab_points, const ExactState& exact) {
+  variational::MarchOptions mo;
   mo.window_points = slab_points;
   mo.solve = options;
   // A convergence study measures the grids it names: an under-resolved one
   // is reported, not silently refined.
   mo.stabilize = false;
-  const MarchResult m = Guarded([&] { return problem.march(grid, mo, {}); },
-                                [](MarchResult& f, const std::string& why) {
-                                  f.status = {false, why};
-                                });
+  const variational::MarchResult m =
+      Guarded([&] { return problem.march(grid, mo, {}); },
+              [](variational::MarchResult& f, const std::string& why) {
+                f.status = {false, why};
+              });
   ConvergenceRow r;
   r.points = grid.points;
   const std::size_t last = m.t.size() - 1;
@@ -122,9 +124,10 @@ ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
   return r;
 }
 
-ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
+ConvergenceStudy RunToleranceStudy(const NamedProblem& problem,
+                                   variational::Grid grid,
                                    const std::vector<double>& tolerances,
-                                   const SolveOptions& options,
+                                   const variational::SolveOptions& options,
                                    long long window_points,
                                    double round_off_floor) {
   ConvergenceStudy study;
@@ -132,13 +135,13 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
   const ExactState exact = problem.exact(grid.t_end);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (double tol : tolerances) {
-    MarchOptions mo;
+    variational::MarchOptions mo;
     mo.window_points = window_points;
     mo.solve = options;
     mo.tolerance = {tol, tol};
     mo.keep_trajectory = false;
     double max_error = 0, max_error_v = 0;
-    const MarchResult m = Guarded(
+    const variational::MarchResult m = Guarded(
         [&] {
           return problem.march(
               grid, mo, [&](double t, const double* x, const double* v) {
@@ -149,7 +152,7 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
                   max_error_v = std::max(max_error_v, std::abs(v[c] - e.v[c]));
               });
         },
-        [](MarchResult& f, const std::string& why) {
+        [](variational::MarchResult& f, const std::string& why) {
           f.status = {false, why};
         });
     ConvergenceRow r;
@@ -177,9 +180,10 @@ ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
   return study;
 }
 
-ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
+ConvergenceStudy RunConvergence(const NamedProblem& problem,
+                                variational::Grid grid,
                                 const std::vector<long long>& points,
-                                const SolveOptions& options,
+                                const variational::SolveOptions& options,
                                 double round_off_floor, long long slab_points) {
   ConvergenceStudy study;
   const double span = grid.t_end - grid.t_start;
@@ -193,17 +197,17 @@ ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
       study.rows.push_back(r);
       continue;
     }
-    const IvpSolution<double> s =
-        Guarded([&] { return problem.solve(grid, options); },
-                [&](IvpSolution<double>& f, const std::string& why) {
-                  f.status = {false, why};
-                  f.x1 = f.velocity = Eigen::MatrixXd::Constant(
-                      1, long(exact.x.size()),
-                      std::numeric_limits<double>::quiet_NaN());
-                  f.t = {grid.t_end};
-                  f.corrected.position.assign(
-                      exact.x.size(), std::numeric_limits<double>::quiet_NaN());
-                });
+    const variational::IvpSolution<double> s = Guarded(
+        [&] { return problem.solve(grid, options); },
+        [&](variational::IvpSolution<double>& f, const std::string& why) {
+          f.status = {false, why};
+          f.x1 = f.velocity = Eigen::MatrixXd::Constant(
+              1, long(exact.x.size()),
+              std::numeric_limits<double>::quiet_NaN());
+          f.t = {grid.t_end};
+          f.corrected.position.assign(exact.x.size(),
+                                      std::numeric_limits<double>::quiet_NaN());
+        });
     ConvergenceRow r;
     r.points = n;
     r.dt = span / static_cast<double>(n);
@@ -238,4 +242,4 @@ ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
   return study;
 }
 
-}  // namespace vivp
+}  // namespace vivp::studies

@@ -16,7 +16,7 @@
 #include "solvers/variational/march_types.h"
 #include "studies/convergence.h"
 
-namespace vivp {
+namespace vivp::studies {
 
 struct ExactState {
   std::vector<double> x, v, p;  // position, velocity, momentum ∂L/∂v
@@ -25,11 +25,14 @@ struct ExactState {
 struct NamedProblem {
   std::string name;
   std::string description;
-  InitialData initial;
-  std::function<IvpSolution<double>(const Grid&, const SolveOptions&)> solve;
+  variational::InitialData initial;
+  std::function<variational::IvpSolution<double>(
+      const variational::Grid&, const variational::SolveOptions&)>
+      solve;
   // The observer (may be empty) sees every node once, in order.
-  std::function<MarchResult(const Grid&, const MarchOptions&,
-                            const NodeObserver&)>
+  std::function<variational::MarchResult(const variational::Grid&,
+                                         const variational::MarchOptions&,
+                                         const variational::NodeObserver&)>
       march;
   // The closed form, or the reference trajectory computed when there is
   // none; `reference` says which.
@@ -53,27 +56,30 @@ bool HasProblem(const std::string& name);
 // Marches `problem` in windows of `slab_points` and measures like
 // RunConvergence: x_N and (Dx)_N of the last window, and the handed-off
 // (corrected) end state.
-ConvergenceRow MarchRow(const NamedProblem& problem, const Grid& grid,
-                        const SolveOptions& options, long long slab_points,
-                        const ExactState& exact);
+ConvergenceRow MarchRow(const NamedProblem& problem,
+                        const variational::Grid& grid,
+                        const variational::SolveOptions& options,
+                        long long slab_points, const ExactState& exact);
 
 // Marches `problem` under error control for every tolerance (absolute and
 // relative both set to it) in windows of `window_points`, and measures the
 // achieved errors against the exact solution: of the handed-off end state
 // (err_x_corrected, err_p_corrected for the velocity), and the largest over
 // every returned node (max_error); `points` is the number of nodes used.
-ConvergenceStudy RunToleranceStudy(const NamedProblem& problem, Grid grid,
+ConvergenceStudy RunToleranceStudy(const NamedProblem& problem,
+                                   variational::Grid grid,
                                    const std::vector<double>& tolerances,
-                                   const SolveOptions& options,
+                                   const variational::SolveOptions& options,
                                    long long window_points,
                                    double round_off_floor = 1e-13);
 
 // Solves `problem` on every grid size and measures the errors at t_end; with
 // slab_points > 0 it marches in windows of that many points instead.
-ConvergenceStudy RunConvergence(const NamedProblem& problem, Grid grid,
+ConvergenceStudy RunConvergence(const NamedProblem& problem,
+                                variational::Grid grid,
                                 const std::vector<long long>& points,
-                                const SolveOptions& options,
+                                const variational::SolveOptions& options,
                                 double round_off_floor = 1e-13,
                                 long long slab_points = 0);
 
-}  // namespace vivp
+}  // namespace vivp::studies

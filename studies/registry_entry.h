@@ -10,24 +10,26 @@
 #include "solvers/variational/solve.h"
 #include "studies/registry.h"
 
-namespace vivp {
+namespace vivp::studies {
 
 namespace detail {
 
 template <class P, class ExactFn>
 NamedProblem Entry(std::string name, std::string description, P problem,
-                   InitialData initial, ExactFn exact_fn,
+                   variational::InitialData initial, ExactFn exact_fn,
                    std::string reference = "exact") {
   NamedProblem e;
   e.name = std::move(name);
   e.description = std::move(description);
   e.initial = initial;
   e.reference = std::move(reference);
-  e.solve = [problem, initial](const Grid& g, const SolveOptions& o) {
+  e.solve = [problem, initial](const variational::Grid& g,
+                               const variational::SolveOptions& o) {
     return Solve(problem, initial, g, o);
   };
-  e.march = [problem, initial](const Grid& g, const MarchOptions& o,
-                               const NodeObserver& observer) {
+  e.march = [problem, initial](const variational::Grid& g,
+                               const variational::MarchOptions& o,
+                               const variational::NodeObserver& observer) {
     return Solve(problem, initial, g, o, observer);
   };
   e.momentum = [problem](const double* x, const double* v) {
@@ -38,7 +40,7 @@ NamedProblem Entry(std::string name, std::string description, P problem,
       z[c] = x[c];
       z[d + c] = v[c];
     }
-    const auto g = ad::Gradient<double, 2 * d>(
+    const auto g = autodiff::Gradient<double, 2 * d>(
         [&](const auto* y) { return problem(y, y + d); }, z);
     return std::vector<double>(g.second.data() + d, g.second.data() + 2 * d);
   };
@@ -56,19 +58,19 @@ NamedProblem Entry(std::string name, std::string description, P problem,
 // (ode_reference.h), one integration kept for the whole study.
 template <class P>
 NamedProblem EntryWithReference(std::string name, std::string description,
-                                P problem, InitialData initial) {
+                                P problem, variational::InitialData initial) {
   struct Shared {
     explicit Shared(P p) : problem(std::move(p)) {}
     P problem;
-    std::unique_ptr<OdeReference<P>> ode;  // refers to `problem`
+    std::unique_ptr<variational::OdeReference<P>> ode;  // refers to `problem`
   };
   const std::vector<double> zero(P::kDim, 0.0);
   const int order = action::SystemOrder<double>(
       problem, initial.x.data(),
       initial.v.empty() ? zero.data() : initial.v.data());
   auto shared = std::make_shared<Shared>(problem);
-  shared->ode = std::make_unique<OdeReference<P>>(shared->problem, order, 0.0,
-                                                  initial.x, initial.v, 1.0);
+  shared->ode = std::make_unique<variational::OdeReference<P>>(
+      shared->problem, order, 0.0, initial.x, initial.v, 1.0);
   auto exact = [shared](const P&, double t) {
     ExactState s{
         std::vector<double>(P::kDim), std::vector<double>(P::kDim), {}};
@@ -76,11 +78,16 @@ NamedProblem EntryWithReference(std::string name, std::string description,
     return s;
   };
   return Entry(std::move(name), std::move(description), std::move(problem),
-               std::move(initial), exact, OdeReference<P>::Description());
+               std::move(initial), exact,
+               variational::OdeReference<P>::Description());
 }
 
+}  // namespace detail
+
+// Closed forms in the shape Register's `exact` takes (lagrangians/
+// register.h). A scalar problem whose Exact(t) returns {x, v}:
 template <class P>
-ExactState Scalar(const P& p, double t) {
+ExactState ScalarExact(const P& p, double t) {
   const auto s = p.Exact(t);
   return {{s.x}, {s.v}, {}};
 }
@@ -88,7 +95,7 @@ ExactState Scalar(const P& p, double t) {
 // Canonical systems (L = ½|ẋ|² − V) whose Exact(t) returns (q, p): the
 // momentum is the velocity.
 template <class P>
-ExactState Canonical(const P& p, double t) {
+ExactState CanonicalExact(const P& p, double t) {
   const std::vector<double> y = p.Exact(t);
   const std::size_t d = y.size() / 2;
   return {{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}, {}};
@@ -97,12 +104,10 @@ ExactState Canonical(const P& p, double t) {
 // The initial data of a Hamiltonian problem's state (q, p) for such a
 // system.
 template <class P>
-InitialData CanonicalInitial(const P& p) {
+variational::InitialData CanonicalInitial(const P& p) {
   const std::vector<double> y = problems::InitialState(p);
   const std::size_t d = y.size() / 2;
   return {{y.begin(), y.begin() + d}, {y.begin() + d, y.end()}};
 }
 
-}  // namespace detail
-
-}  // namespace vivp
+}  // namespace vivp::studies

@@ -13,7 +13,7 @@
 #include "studies/bench_problems.h"
 #include "studies/registry.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 namespace {
 
@@ -29,10 +29,10 @@ bool Adaptive(const std::string& method) { return !method.ends_with(kUniform); }
 
 // The march of one configuration: a tolerance (absolute = relative) or a
 // uniform grid of `knob` steps, in the default windows.
-MarchResult March(const NamedProblem& p, const std::string& method,
-                  double t_end, double knob) {
-  Grid g{.op = Operator(method), .t_start = 0.0, .t_end = t_end};
-  MarchOptions o;
+variational::MarchResult March(const NamedProblem& p, const std::string& method,
+                               double t_end, double knob) {
+  variational::Grid g{.op = Operator(method), .t_start = 0.0, .t_end = t_end};
+  variational::MarchOptions o;
   if (Adaptive(method)) {
     o.tolerance = {knob, knob};
   } else {
@@ -66,7 +66,7 @@ ExternalRun RunVariational(const std::string& method,
       run.status = "n/a (initial state differs from the registry's)";
       return run;
     }
-  const MarchResult m = March(p, method, t_end, knob);
+  const variational::MarchResult m = March(p, method, t_end, knob);
   if (!m.status.converged) {
     run.status = "not converged: " + m.status.reason;
     return run;
@@ -93,9 +93,9 @@ ExternalRun RunVariational(const std::string& method,
   // Residual evaluations: each Newton/chord step of a window costs one
   // pointwise gradient per node, plus the first residual of each window;
   // the predictor's Dormand–Prince steps six equations of motion each.
-  run.evaluations =
-      (m.corrections + m.window_count) * MarchOptions{}.window_points +
-      6 * m.predictor_steps;
+  run.evaluations = (m.corrections + m.window_count) *
+                        variational::MarchOptions{}.window_points +
+                    6 * m.predictor_steps;
   run.iterations = m.corrections;
   return run;
 }
@@ -116,7 +116,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
     w.steps = static_cast<long>(knob);
     w.h = t_end / knob;
   }
-  MarchResult m;
+  variational::MarchResult m;
   std::vector<double> t;
   for (int r = 0; r < std::max(repeats, 1); ++r) {
     const auto begin = std::chrono::steady_clock::now();
@@ -143,9 +143,9 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
                                exact.Energy(e.x, e.v)));
   }
   w.energy_error = de / e0;
-  w.evaluations =
-      (m.corrections + m.window_count) * MarchOptions{}.window_points +
-      6 * m.predictor_steps;
+  w.evaluations = (m.corrections + m.window_count) *
+                      variational::MarchOptions{}.window_points +
+                  6 * m.predictor_steps;
   w.iterations = m.corrections;
   return w;
 }
@@ -189,4 +189,4 @@ void RegisterVariationalMethods() {
   (void)registered;
 }
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

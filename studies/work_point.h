@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 struct WorkPoint {
   std::string method;
@@ -82,4 +82,4 @@ inline bool IsAdaptive(const std::string& method) {
          std::find(a.begin(), a.end(), method) != a.end();
 }
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

@@ -29,11 +29,11 @@
 #include "solvers/steppers/odeint_peers.h"
 #include "studies/work_point.h"
 
-namespace vivp::steppers {
+namespace vivp::studies {
 
 template <class Problem>
 std::vector<std::string> WorkPrecisionMethods() {
-  std::vector<std::string> out = MethodsFor<Problem>();
+  std::vector<std::string> out = steppers::MethodsFor<Problem>();
   for (const auto& p : PeerNames())
     if (Problem::kSeparable || p == "odeint_rk4" || p == "odeint_dopri5")
       out.push_back(p);
@@ -42,15 +42,19 @@ std::vector<std::string> WorkPrecisionMethods() {
 }
 
 template <class Problem>
-AnyStepper<Problem> MakeAnyStepper(const std::string& name,
-                                   const HamiltonianSystem<Problem>& system) {
+steppers::AnyStepper<Problem> MakeAnyStepper(
+    const std::string& name,
+    const steppers::HamiltonianSystem<Problem>& system) {
   if (name == "odeint_rk4")
-    return AnyStepper<Problem>(odeint_peers::Rk4<Problem>(system));
+    return steppers::AnyStepper<Problem>(
+        steppers::odeint_peers::Rk4<Problem>(system));
   if constexpr (Problem::kSeparable) {
     if (name == "odeint_velocity_verlet")
-      return AnyStepper<Problem>(odeint_peers::VelocityVerlet<Problem>(system));
+      return steppers::AnyStepper<Problem>(
+          steppers::odeint_peers::VelocityVerlet<Problem>(system));
     if (name == "odeint_mclachlan")
-      return AnyStepper<Problem>(odeint_peers::McLachlan<Problem>(system));
+      return steppers::AnyStepper<Problem>(
+          steppers::odeint_peers::McLachlan<Problem>(system));
   }
   try {
     return MakeStepper<Problem>(name, system);
@@ -72,7 +76,7 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
                   const std::string& method, const std::vector<double>& y0,
                   const std::vector<double>& reference, double t_end,
                   double knob, int repeats = 5) {
-  using System = HamiltonianSystem<Problem>;
+  using System = steppers::HamiltonianSystem<Problem>;
   using Vector = typename System::Vector;
   if (repeats < 5)
     throw std::invalid_argument("repeats must be at least 5, got " +
@@ -121,7 +125,8 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
     run = [&](bool with_observer) {
       y = start;
       System counted(problem);
-      const RunReport r = odeint_peers::Dopri5(counted, y, t_end, knob);
+      const steppers::RunReport r =
+          steppers::odeint_peers::Dopri5(counted, y, t_end, knob);
       w.steps = r.steps;
       w.evaluations = r.evaluations;
       w.status = ToString(r.status);
@@ -130,11 +135,11 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
   } else {
     w.steps = static_cast<long>(knob);
     w.h = t_end / w.steps;
-    CheckRunArguments(w.h, w.steps);
+    steppers::CheckRunArguments(w.h, w.steps);
     run = [&](bool with_observer) {
       auto stepper = MakeAnyStepper<Problem>(method, system);
       y = start;
-      const RunReport r =
+      const steppers::RunReport r =
           with_observer
               ? Integrate(stepper, y, w.h, w.steps,
                           [&](double, const Vector& x) { observe(x); })
@@ -166,4 +171,4 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
   return w;
 }
 
-}  // namespace vivp::steppers
+}  // namespace vivp::studies

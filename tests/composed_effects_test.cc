@@ -16,6 +16,7 @@
 #include "solvers/variational/solve_ivp.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 using namespace vivp::problems;
 
 namespace {

@@ -8,11 +8,13 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-#include "core/fit.h"
+#include "core/linalg/fit.h"
 #include "problems/kepler.h"
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
+using namespace vivp::studies;
 namespace bdata = boost::unit_test::data;
 
 namespace {
@@ -22,7 +24,7 @@ constexpr double kTenOrbits = 20 * M_PI;
 MarchResult KeplerE09(const std::string& op, const MarchOptions& o,
                       long long points = 0) {
   const Grid g{.op = op, .points = points, .t_end = kTenOrbits};
-  return FindProblem("kepler_e09").march(g, o, {});
+  return vivp::studies::FindProblem("kepler_e09").march(g, o, {});
 }
 
 }  // namespace
@@ -99,7 +101,7 @@ BOOST_DATA_TEST_CASE(ToleranceSweep_AchievedErrorTracksTheTolerance,
   // error stays below twice the tolerance (measured ratios 8e-8 … 1.6).
   const double t_end = std::string(problem) == "kepler_e09" ? kTenOrbits : 10;
   const std::vector<double> tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
-  const ConvergenceStudy s = RunToleranceStudy(
+  const vivp::studies::ConvergenceStudy s = RunToleranceStudy(
       FindProblem(problem), {.op = op, .t_end = t_end}, tolerances, {}, 48);
   for (const auto& r : s.rows) {
     BOOST_TEST_REQUIRE(r.converged, r.tolerance << ": " << r.reason);

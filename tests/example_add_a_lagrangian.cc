@@ -5,10 +5,10 @@
 #include "solvers/variational/solve_ivp.h"
 
 // --- example ---
-vivp::IvpSolution<double> Gyrate() {
-  return vivp::SolveIvp(vivp::problems::Cyclotron{},
-                        {.x = {1.0, 0.0}, .v = {0.0, -2.0}},
-                        {.op = "sbp42", .points = 400, .t_end = 3.0});
+vivp::variational::IvpSolution<double> Gyrate() {
+  return vivp::variational::SolveIvp(
+      vivp::problems::Cyclotron{}, {.x = {1.0, 0.0}, .v = {0.0, -2.0}},
+      {.op = "sbp42", .points = 400, .t_end = 3.0});
 }
 // --- end of example ---
 

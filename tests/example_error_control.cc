@@ -5,13 +5,14 @@
 
 // --- example ---
 // Kepler e = 0.9 for ten orbits, to a tolerance instead of a step count.
-vivp::MarchResult TenOrbits() {
+vivp::variational::MarchResult TenOrbits() {
   vivp::problems::Kepler orbit;
   orbit.e = 0.9;
-  vivp::MarchOptions options;
+  vivp::variational::MarchOptions options;
   options.tolerance = {.absolute = 1e-6, .relative = 1e-6};
-  return vivp::MarchIvp(orbit, {.x = {0.1, 0.0}, .v = {0.0, std::sqrt(19.0)}},
-                        {.op = "sbp84", .t_end = 20 * M_PI}, options);
+  return vivp::variational::MarchIvp(
+      orbit, {.x = {0.1, 0.0}, .v = {0.0, std::sqrt(19.0)}},
+      {.op = "sbp84", .t_end = 20 * M_PI}, options);
 }
 // --- end of example ---
 
@@ -22,7 +23,7 @@ vivp::MarchResult TenOrbits() {
 #include <string>
 
 BOOST_AUTO_TEST_CASE(TenOrbitsExample_EndsOnTheExactOrbit) {
-  const vivp::MarchResult m = TenOrbits();
+  const vivp::variational::MarchResult m = TenOrbits();
   BOOST_TEST_REQUIRE(m.status.converged, m.status.reason);
   vivp::problems::Kepler orbit;
   orbit.e = 0.9;

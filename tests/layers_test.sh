@@ -10,6 +10,13 @@
 # uses for its Jets) is included only under solvers/, and core/ and
 # problems/ neither print nor open files.
 #
+# Namespaces follow folders: a file in LAYER/SUB/ declares vivp::SUB (core/sbp
+# is vivp::sbp, solvers/variational is vivp::variational), a file directly in
+# LAYER/ declares vivp::LAYER (studies/ is vivp::studies, apps/ vivp::apps),
+# nested namespaces below those allowed. The one exception is
+# lagrangians/register.h, the user's entry point, which is vivp itself
+# (vivp::Register).
+#
 # Usage: layers_test.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
@@ -59,5 +66,24 @@ if hits=$(grep -rnE '#include <(iostream|fstream|cstdio)>|std::(cout|cerr)|print
   echo "$hits"
   status=1
 fi
+
+# Namespaces follow folders.
+for layer in core problems solvers studies scene report apps figures bench \
+             lagrangians; do
+  [[ -d $layer ]] || continue
+  while IFS= read -r file; do
+    rel=${file#"$layer"/}
+    if [[ $rel == */* ]]; then expected="vivp::${rel%%/*}"
+    else expected="vivp::$layer"; fi
+    [[ $file == lagrangians/register.h ]] && expected="vivp"
+    while IFS=: read -r line name; do
+      if [[ $name != "$expected" && $name != "$expected"::* ]]; then
+        echo "$file:$line: namespace $name in a file of $layer/ (expected $expected)"
+        status=1
+      fi
+    done < <(grep -nE '^namespace vivp[a-z_:]* \{' "$file" |
+             sed -E 's/^([0-9]+):namespace ([a-z_:]+) \{.*/\1:\2/')
+  done < <(find "$layer" -name '*.h' -o -name '*.cc' -o -name '*.in')
+done
 
 exit $status

@@ -13,6 +13,7 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
@@ -23,7 +24,7 @@ MarchResult AnharmonicMarch(Path path, long long window) {
   o.window_points = window;
   o.solve.path = path;
   o.keep_trajectory = false;
-  return FindProblem("anharmonic").march(g, o, {});
+  return vivp::studies::FindProblem("anharmonic").march(g, o, {});
 }
 
 class NullSink : public scene::RunSink {

@@ -26,6 +26,7 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 namespace bdata = boost::unit_test::data;
 
 namespace {
@@ -39,8 +40,8 @@ struct Study {
 
 Study Sweep(const std::string& problem, double t_end, const std::string& op,
             long long window) {
-  const NamedProblem& p = FindProblem(problem);
-  const ExactState exact = p.exact(t_end);
+  const vivp::studies::NamedProblem& p = vivp::studies::FindProblem(problem);
+  const vivp::studies::ExactState exact = p.exact(t_end);
   Study s;
   for (int k = 0; k < 28; ++k) {
     Grid g{.op = op, .points = 257 + 64 * k, .t_end = t_end};

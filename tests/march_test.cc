@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/fit.h"
+#include "core/linalg/fit.h"
 #include "problems/anharmonic.h"
 #include "problems/damped_oscillator.h"
 #include "problems/kepler.h"
@@ -13,6 +13,7 @@
 #include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 namespace bdata = boost::unit_test::data;
 
 namespace {
@@ -22,7 +23,7 @@ namespace {
 // anharmonic x = 1, v = 0.3; Kepler e = 0.6 from pericentre).
 MarchResult March(const char* name, const Grid& g, const MarchOptions& o,
                   const NodeObserver& observer = {}) {
-  return FindProblem(name).march(g, o, observer);
+  return vivp::studies::FindProblem(name).march(g, o, observer);
 }
 
 double EndError(const MarchResult& r, double exact) {
@@ -38,7 +39,7 @@ BOOST_DATA_TEST_CASE(DampedSbp42_MarchedWindowsMatchTheGlobalCorrectedEnd,
   problems::DampedOscillator p;
   const Grid g{.op = "sbp42", .points = 16385, .t_end = 204.8};
   const double exact = p.Exact(204.8).x;
-  const auto global = FindProblem("damped").solve(g, {});
+  const auto global = vivp::studies::FindProblem("damped").solve(g, {});
   const double global_error = std::abs(global.corrected.position[0] - exact);
   MarchOptions o;
   o.window_points = window;
@@ -73,7 +74,7 @@ BOOST_DATA_TEST_CASE(DampedMarch_KeepsTheGlobalOrder,
     dt.push_back(204.8 / double(n - 1));
     err.push_back(EndError(r, p.Exact(204.8).x));
   }
-  const double order = FitPowerLaw(dt, err).order;
+  const double order = vivp::linalg::FitPowerLaw(dt, err).order;
   BOOST_TEST_MESSAGE(op << " marched order " << order);
   const double expected = std::string(op) == "sbp42" ? 4.0 : 2.0;
   const double tolerance = std::string(op) == "sbp42" ? 0.2 : 0.1;
@@ -97,7 +98,7 @@ BOOST_AUTO_TEST_CASE(AnharmonicSbp42_MarchesToTenWithoutFallback) {
     err.push_back(EndError(r, a.Exact(10.0).x));
   }
   BOOST_TEST(err.back() <= 1e-7, "error at dt ≈ 0.0024: " << err.back());
-  const double order = FitPowerLaw(dt, err).order;
+  const double order = vivp::linalg::FitPowerLaw(dt, err).order;
   BOOST_TEST(std::abs(order - 4.0) <= 0.2, "order " << order);
 }
 
@@ -238,7 +239,8 @@ BOOST_AUTO_TEST_CASE(ExtremeGrid_DampedMarchedOver2To20Points) {
   BOOST_TEST(seen == n);
   BOOST_TEST(r.fallbacks == 0);
   BOOST_TEST(r.t.empty());  // streamed: nothing kept
-  const auto exact = FindProblem("damped").exact(dt * double(n - 1));
+  const auto exact =
+      vivp::studies::FindProblem("damped").exact(dt * double(n - 1));
   const double error = std::abs(r.end_position[0] - exact.x[0]);
   BOOST_TEST_MESSAGE("damped, Nt = 2^20 + 1 marched: corrected end error "
                      << error);
@@ -250,9 +252,9 @@ BOOST_AUTO_TEST_CASE(FitOrders_LeaveOutRowsThatDidNotConverge) {
   // an unconverged iterate, here 10) does not enter the fitted order; the
   // converged rows follow C·h⁴ and give 4. With one converged row there is
   // no order (NaN, reported as n/a by `vivp converge`).
-  ConvergenceStudy study;
+  vivp::studies::ConvergenceStudy study;
   for (long long n : {32, 64, 128, 256}) {
-    ConvergenceRow r;
+    vivp::studies::ConvergenceRow r;
     r.points = n;
     r.dt = r.dt_true = 1.0 / double(n);
     r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected =
@@ -291,7 +293,7 @@ BOOST_AUTO_TEST_CASE(BandedSubstitution_EqualsLapackDgbtrs) {
     const linalg::BandedMatrix<double> original = a;
     std::vector<double> b(sh.n);
     for (double& v : b) v = u(rng);
-    solvers::BandedLu<double> lu;
+    variational::BandedLu<double> lu;
     BOOST_TEST_REQUIRE(lu.Factor(a));
     std::vector<double> ours = b, lapack = b, ab(original.size());
     lu.Solve(ours.data());

@@ -45,16 +45,17 @@ const bool registered = vivp::Register<Duffing>({
 
 BOOST_AUTO_TEST_CASE(RegisteredLagrangian_IsAConvergeProblemWithAReference) {
   BOOST_TEST(registered);
-  const vivp::NamedProblem& p = vivp::FindProblem("fixture_duffing");
+  const vivp::studies::NamedProblem& p =
+      vivp::studies::FindProblem("fixture_duffing");
   BOOST_TEST(p.reference.find("Euler–Lagrange") != std::string::npos,
              p.reference);
-  BOOST_TEST(vivp::ProblemNameList().find("fixture_duffing") !=
+  BOOST_TEST(vivp::studies::ProblemNameList().find("fixture_duffing") !=
              std::string::npos);
   // The study converges at the operator's order against the reference:
   // SBP42's corrected end position at order 4 (docs/method.md §7).
-  const vivp::ConvergenceStudy s =
-      vivp::RunConvergence(p, {.op = "sbp42", .t_end = 2.0},
-                           {129, 257, 513, 1025}, vivp::SolveOptions{});
+  const vivp::studies::ConvergenceStudy s = vivp::studies::RunConvergence(
+      p, {.op = "sbp42", .t_end = 2.0}, {129, 257, 513, 1025},
+      vivp::variational::SolveOptions{});
   for (const auto& r : s.rows) BOOST_TEST(r.converged, r.reason);
   BOOST_TEST_MESSAGE("orders: x " << s.orders.x << ", x+λ4 "
                                   << s.orders.x_corrected);
@@ -89,7 +90,7 @@ BOOST_AUTO_TEST_CASE(
   // L = ½ẋ² − V is separable: the steppers (Störmer–Verlet among them) run
   // on H = ½p² + V, the variational solver on L, against the reference
   // integration at t = 10. Orders from two step counts, measured.
-  const auto& b = vivp::steppers::FindBenchProblem("fixture_duffing");
+  const auto& b = vivp::studies::FindBenchProblem("fixture_duffing");
   auto has = [&](const std::string& m) {
     return std::find(b.methods.begin(), b.methods.end(), m) != b.methods.end();
   };
@@ -116,7 +117,7 @@ BOOST_AUTO_TEST_CASE(RegisteredLagrangian_WithoutAHamiltonianForm_IsNamed) {
   // The first-order system has a dissipative term and a singular M: the
   // bench says so instead of listing it.
   try {
-    vivp::steppers::FindBenchProblem("exponential");
+    vivp::studies::FindBenchProblem("exponential");
     BOOST_FAIL("exponential was accepted");
   } catch (const std::invalid_argument& e) {
     BOOST_TEST(
@@ -124,7 +125,7 @@ BOOST_AUTO_TEST_CASE(RegisteredLagrangian_WithoutAHamiltonianForm_IsNamed) {
         e.what());
   }
   // A vector potential makes H non-separable: no Störmer–Verlet.
-  const auto& c = vivp::steppers::FindBenchProblem("cyclotron");
+  const auto& c = vivp::studies::FindBenchProblem("cyclotron");
   const bool verlet = std::find(c.methods.begin(), c.methods.end(), "verlet") !=
                       c.methods.end();
   BOOST_TEST(!verlet);

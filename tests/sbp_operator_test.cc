@@ -185,13 +185,14 @@ BOOST_AUTO_TEST_CASE(NestedJets_SecondDerivativeOfQuadraticForm) {
   const int n = 20, a = 3, b = 5;
   const auto d = MakeOperator<double>("sbp42", n);
   std::vector<Outer> u(n);
-  for (int i = 0; i < n; ++i) u[i] = vivp::Lift<Outer>(std::cos(0.3 * i));
+  for (int i = 0; i < n; ++i)
+    u[i] = vivp::autodiff::Lift<Outer>(std::cos(0.3 * i));
   u[a].a.v[0] = 1.0;
   u[a].v[0] = Inner(1.0);
   u[b].a.v[1] = 1.0;
   u[b].v[1] = Inner(1.0);
   const auto du = d.Apply(u);
-  Outer f = vivp::Lift<Outer>(0.0);
+  Outer f = vivp::autodiff::Lift<Outer>(0.0);
   for (const auto& x : du) f += x * x;
   const Eigen::MatrixXd dtd = d.DenseD().transpose() * d.DenseD();
   const double scale = dtd.cwiseAbs().maxCoeff();

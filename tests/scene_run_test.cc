@@ -9,17 +9,18 @@
 #include <functional>
 #include <map>
 
-#include "scene/run.h"
-#include "scene/scene.h"
 #include "problems/cyclotron.h"
 #include "problems/pendulum.h"
+#include "scene/run.h"
+#include "scene/scene.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/stormer_verlet.h"
 #include "solvers/variational/march.h"
-#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
+#include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 
 namespace {
 
@@ -88,7 +89,7 @@ Path Marched(const P& problem, const InitialData& init, const Grid& grid,
 // The problems of Rothkopf & Nordström 2023 and Kepler from the compiled
 // registry (their initial data are the scenes' too).
 Path Registered(const std::string& name, const scene::Scene& s) {
-  const NamedProblem& problem = FindProblem(name);
+  const vivp::studies::NamedProblem& problem = vivp::studies::FindProblem(name);
   const Grid grid{.op = s.method.op,
                   .points = s.points,
                   .t_start = s.t_start,
@@ -204,7 +205,8 @@ bool UnderErrorControl_SceneAndApiMeetTheTolerance(const scene::Scene& s) {
   MemorySink sink;
   const scene::RunOutcome r = scene::RunScene(s, sink);
   BOOST_TEST_REQUIRE(r.converged, r.status);
-  const NamedProblem& problem = FindProblem("kepler_e09");
+  const vivp::studies::NamedProblem& problem =
+      vivp::studies::FindProblem("kepler_e09");
   BOOST_TEST_REQUIRE(problem.initial.x == s.x0);
   BOOST_TEST_REQUIRE(problem.initial.v == s.v0);
   MarchOptions o = Windows(s.method.slab_points);
@@ -212,7 +214,7 @@ bool UnderErrorControl_SceneAndApiMeetTheTolerance(const scene::Scene& s) {
   const Grid grid{.op = s.method.op, .t_start = s.t_start, .t_end = s.t_end};
   const MarchResult api = problem.march(grid, o, {});
   BOOST_TEST_REQUIRE(api.status.converged, api.status.reason);
-  const ExactState exact = problem.exact(s.t_end);
+  const vivp::studies::ExactState exact = problem.exact(s.t_end);
   const double tol = s.method.tolerance.relative;
   double scene_error = 0, api_error = 0;
   for (std::size_t c = 0; c < exact.x.size(); ++c) {

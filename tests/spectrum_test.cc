@@ -2,7 +2,7 @@
 // docs/method.md §2). Multiplicities are counts through ranks of nested
 // null spaces, never thresholded eigenvalues.
 #define BOOST_TEST_MODULE spectrum
-#include "core/spectrum.h"
+#include "core/linalg/spectrum.h"
 
 #include <algorithm>
 #include <boost/test/data/test_case.hpp>
@@ -12,8 +12,8 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
 
-using vivp::AnalyzeSpectrum;
-using vivp::Spectrum;
+using vivp::linalg::AnalyzeSpectrum;
+using vivp::linalg::Spectrum;
 using vivp::sbp::MakeOperator;
 using vivp::sbp::RegularizedOperator;
 

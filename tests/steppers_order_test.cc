@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/fit.h"
+#include "core/linalg/fit.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
 #include "problems/phase_space.h"
@@ -41,8 +41,8 @@ std::ostream& operator<<(std::ostream& os, const Case& c) {
 
 // Error at t = T for n = n0, 2n0, 4n0, 8n0 steps; returns the fit.
 template <class Problem, class MakeFn>
-PowerLawFit MeasureOrder(const Problem& problem, double t_end, int n0,
-                         MakeFn make) {
+vivp::linalg::PowerLawFit MeasureOrder(const Problem& problem, double t_end,
+                                       int n0, MakeFn make) {
   using System = steppers::HamiltonianSystem<Problem>;
   const System system(problem);
   const auto exact = problem.Exact(t_end);
@@ -60,13 +60,14 @@ PowerLawFit MeasureOrder(const Problem& problem, double t_end, int n0,
     error.push_back(e);
     BOOST_TEST_MESSAGE(stepper.name() << " n=" << n << " error=" << e);
   }
-  const PowerLawFit fit = FitPowerLaw(h, error, kRoundOffFloor);
+  const vivp::linalg::PowerLawFit fit =
+      vivp::linalg::FitPowerLaw(h, error, kRoundOffFloor);
   BOOST_TEST_REQUIRE(fit.points_used >= 3);
   return fit;
 }
 
 template <class Problem>
-PowerLawFit MethodOrder(const Problem& problem, const Case& c) {
+vivp::linalg::PowerLawFit MethodOrder(const Problem& problem, const Case& c) {
   return MeasureOrder(problem, 2 * M_PI, c.first_steps, [&](const auto& s) {
     return steppers::MakeStepper<Problem>(c.method, s);
   });
@@ -91,7 +92,7 @@ const Case kKeplerCases[] = {{"rk4", 4, 800},
 
 BOOST_DATA_TEST_CASE(Pendulum_FittedOrderMatchesNominalWithinPointFifteen,
                      bdata::make(kPendulumCases), c) {
-  const PowerLawFit fit = MethodOrder(problems::Pendulum{}, c);
+  const vivp::linalg::PowerLawFit fit = MethodOrder(problems::Pendulum{}, c);
   BOOST_TEST_MESSAGE(c.method << " pendulum order " << fit.order);
   BOOST_TEST(
       std::fabs(fit.order - c.nominal) <= 0.15,
@@ -100,7 +101,7 @@ BOOST_DATA_TEST_CASE(Pendulum_FittedOrderMatchesNominalWithinPointFifteen,
 
 BOOST_DATA_TEST_CASE(Kepler_FittedOrderMatchesNominalWithinPointFifteen,
                      bdata::make(kKeplerCases), c) {
-  const PowerLawFit fit = MethodOrder(problems::Kepler{}, c);
+  const vivp::linalg::PowerLawFit fit = MethodOrder(problems::Kepler{}, c);
   BOOST_TEST_MESSAGE(c.method << " Kepler order " << fit.order);
   BOOST_TEST(
       std::fabs(fit.order - c.nominal) <= 0.15,

@@ -7,6 +7,7 @@
 #include "solvers/variational/march.h"
 
 using namespace vivp;
+using namespace vivp::variational;
 namespace bdata = boost::unit_test::data;
 
 // Named (not anonymous) namespace: the data-driven test case's lambdas
@@ -23,7 +24,7 @@ struct Spring {
   }
 };
 
-double MaxAbs(const IvpSolution<double>& s) {
+double MaxAbs(const vivp::variational::IvpSolution<double>& s) {
   return s.x1.cwiseAbs().maxCoeff();
 }
 
@@ -40,7 +41,7 @@ BOOST_DATA_TEST_CASE(StabilityLimit_IsWhereTheSolutionStopsBeingBounded,
   Spring s;
   auto solve = [&](double h_omega) {
     const Grid g{.op = op, .points = 400, .t_end = h_omega * 399};
-    SolveOptions o;
+    vivp::variational::SolveOptions o;
     return SolveIvp(s, {{1.0}, {0.0}}, g, o);
   };
   const auto at = solve(limit);
@@ -68,7 +69,7 @@ BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {
       r.status.reason);
   // Marching without stabilization inherits it: the first window reports,
   // the march stops.
-  MarchOptions mo;
+  vivp::variational::MarchOptions mo;
   mo.window_points = 32;
   mo.max_split_depth = 0;
   mo.stabilize = false;
@@ -93,7 +94,7 @@ BOOST_AUTO_TEST_CASE(StiffSpring_MarchStaysBoundedOnARefinedGrid) {
   Spring s;
   s.k = 1e4;
   const Grid g{.op = "sbp42", .points = 101, .t_end = 10.0};
-  MarchOptions mo;
+  vivp::variational::MarchOptions mo;
   mo.window_points = 32;
   const auto m = MarchIvp(s, {{1.0}, {0.0}}, g, mo);
   BOOST_TEST(m.status.converged, m.status.reason);

@@ -13,10 +13,12 @@
 #include "problems/free_fall.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
-#include "studies/registry.h"
 #include "solvers/variational/solve_ivp.h"
+#include "studies/registry.h"
 
 using namespace vivp;
+using namespace vivp::variational;
+using namespace vivp::studies;
 namespace bdata = boost::unit_test::data;
 
 namespace {
@@ -24,13 +26,15 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 const std::vector<long long> kPaperGrids = {16, 32, 64, 128, 256, 512};
 
-ConvergenceStudy Study(const std::string& problem, const std::string& op,
-                       Path path = Path::kReducedNewton) {
+vivp::studies::ConvergenceStudy Study(const std::string& problem,
+                                      const std::string& op,
+                                      Path path = Path::kReducedNewton) {
   Grid grid;
   grid.op = op;
   SolveOptions options;
   options.path = path;
-  return RunConvergence(FindProblem(problem), grid, kPaperGrids, options);
+  return RunConvergence(vivp::studies::FindProblem(problem), grid, kPaperGrids,
+                        options);
 }
 
 struct PaperOrder {
@@ -56,7 +60,7 @@ const PaperOrder kPaperOrders[] = {
 
 BOOST_DATA_TEST_CASE(FittedOrders_MatchThePaperWithinPointOne,
                      bdata::make(kPaperOrders), p) {
-  const ConvergenceStudy s = Study(p.problem, p.op);
+  const vivp::studies::ConvergenceStudy s = Study(p.problem, p.op);
   for (const auto& r : s.rows)
     BOOST_TEST(r.converged, r.points << " " << r.reason);
   BOOST_TEST(std::abs(s.orders.x - p.value) <= 0.1,
@@ -68,7 +72,7 @@ BOOST_DATA_TEST_CASE(FittedOrders_MatchThePaperWithinPointOne,
 }
 
 BOOST_AUTO_TEST_CASE(FreeFallSbp21_TrueGridSpacingGivesExactlyTwo) {
-  const ConvergenceStudy s = Study("freefall", "sbp21");
+  const vivp::studies::ConvergenceStudy s = Study("freefall", "sbp21");
   BOOST_TEST(std::abs(s.orders_true_dt.x - 2.0) <= 0.005);
 }
 
@@ -78,7 +82,8 @@ BOOST_AUTO_TEST_CASE(FreeFallSbp42_IsExactToRoundOffUpTo2To20Points) {
   // the level of eps (docs/method.md §6) once D is evaluated on differences
   // (exact on constants). Before that change the error grew like eps·Nt,
   // 1.8e-13 at Nt = 65536; the required bound is 1e-13.
-  const NamedProblem& ff = FindProblem("freefall");
+  const vivp::studies::NamedProblem& ff =
+      vivp::studies::FindProblem("freefall");
   // Up to Nt = 2²⁰ (one global reduced solve in double; 217 MB peak RSS,
   // measured).
   for (long long n : {16, 64, 256, 1024, 4096, 16384, 65536, 1 << 20}) {
@@ -92,7 +97,8 @@ BOOST_AUTO_TEST_CASE(FreeFallSbp42_IsExactToRoundOffUpTo2To20Points) {
 }
 
 BOOST_AUTO_TEST_CASE(PiMode_UnregularizedSolveIsWrongOnEvenNodes) {
-  const NamedProblem& ff = FindProblem("freefall");
+  const vivp::studies::NamedProblem& ff =
+      vivp::studies::FindProblem("freefall");
   auto max_error = [&](const IvpSolution<double>& s, int parity) {
     double m = 0;
     for (int i = parity < 0 ? 0 : parity; i < s.points();
@@ -118,7 +124,8 @@ BOOST_AUTO_TEST_CASE(PiMode_UnregularizedSolveIsWrongOnEvenNodes) {
 BOOST_AUTO_TEST_CASE(LateTime_DampedSbp42StaysBoundedAndOnTheExactDecay) {
   // Fig. 14-15: t2 = 204.8, Nt = 2048 (Δt ≈ 0.1), full doubled system so that
   // x1 = x2 is a measured property, not a construction.
-  const NamedProblem& damped = FindProblem("damped");
+  const vivp::studies::NamedProblem& damped =
+      vivp::studies::FindProblem("damped");
   Grid g;
   g.op = "sbp42";
   g.points = 2048;
@@ -166,7 +173,7 @@ BOOST_AUTO_TEST_CASE(DiscreteImpulseIdentities_HoldAtTheCriticalPoint) {
   for (const char* name : {"anharmonic", "damped"}) {
     Grid g;
     g.points = 128;
-    const auto s = FindProblem(name).solve(g, {});
+    const auto s = vivp::studies::FindProblem(name).solve(g, {});
     const auto D = sbp::MakeOperator<double>("sbp42", 128);
     const double mu = std::string(name) == "damped" ? 0.5 : 1.0;
     const double xi = std::string(name) == "damped" ? 0.00071 : 0.0;
@@ -346,8 +353,10 @@ BOOST_DATA_TEST_CASE(GradientFromJets_MatchesCentralDifferences,
   if (n == "damped") check(problems::DampedOscillator{}, {{1.0}, {0.0}});
   if (n == "coupled")
     check(problems::CoupledOscillators{}, {{1.0, 0.0}, {0.0, 0.3}});
-  if (n == "pendulum") check(problems::Pendulum{}, FindProblem(n).initial);
-  if (n == "kepler") check(problems::Kepler{}, FindProblem(n).initial);
+  if (n == "pendulum")
+    check(problems::Pendulum{}, vivp::studies::FindProblem(n).initial);
+  if (n == "kepler")
+    check(problems::Kepler{}, vivp::studies::FindProblem(n).initial);
   if (n == "cyclotron") check(problems::Cyclotron{}, {{1.0, 0.0}, {0.0, -2.0}});
 }
 
@@ -372,7 +381,8 @@ BOOST_AUTO_TEST_CASE(FreeFallSbp42_MixedPrecisionRefinementIsExactTo65536) {
   // Refinement with a long-double residual (solution and factorization still
   // in double) also reaches eps: the option stays useful for problems whose
   // residual loses more than the difference form of D can recover.
-  const NamedProblem& ff = FindProblem("freefall");
+  const vivp::studies::NamedProblem& ff =
+      vivp::studies::FindProblem("freefall");
   for (long long n : {4096, 16384, 65536}) {
     Grid g;
     g.op = "sbp42";

@@ -44,9 +44,9 @@ BOOST_AUTO_TEST_CASE(GlobalSolve_EndMomentumKeepsTheCorrectedOrder) {
   // −λ3 alone converges at x_N's order 3; moved to the corrected position
   // it converges at order ≥ 4 (measured 4.5–5.8 on N = 64…512).
   BOOST_TEST(registered);
-  const auto& p = vivp::FindProblem("fixture_gauged_charge");
-  const auto s = vivp::RunConvergence(p, {.op = "sbp42", .t_end = 4.0},
-                                      {64, 128, 256, 512}, {});
+  const auto& p = vivp::studies::FindProblem("fixture_gauged_charge");
+  const auto s = vivp::studies::RunConvergence(p, {.op = "sbp42", .t_end = 4.0},
+                                               {64, 128, 256, 512}, {});
   for (const auto& r : s.rows) BOOST_TEST(r.converged, r.reason);
   BOOST_TEST_MESSAGE("global: x+λ4 " << s.orders.x_corrected << ", p "
                                      << s.orders.p_corrected);
@@ -57,9 +57,9 @@ BOOST_AUTO_TEST_CASE(GlobalSolve_EndMomentumKeepsTheCorrectedOrder) {
 BOOST_AUTO_TEST_CASE(Marching_HandsOnTheVelocityOfTheMovedMomentum) {
   // Handing on M⁻¹(−λ3) as the velocity made this march diverge (errors of
   // order 1 at T = 4); the velocity solving ∂L/∂ẋ = p keeps order 4.
-  const auto& p = vivp::FindProblem("fixture_gauged_charge");
-  const auto s = vivp::RunConvergence(p, {.op = "sbp42", .t_end = 4.0},
-                                      {256, 512, 1024, 2048}, {}, 1e-13, 48);
+  const auto& p = vivp::studies::FindProblem("fixture_gauged_charge");
+  const auto s = vivp::studies::RunConvergence(
+      p, {.op = "sbp42", .t_end = 4.0}, {256, 512, 1024, 2048}, {}, 1e-13, 48);
   for (const auto& r : s.rows) BOOST_TEST(r.converged, r.reason);
   BOOST_TEST_MESSAGE("marched: x+λ4 " << s.orders.x_corrected << ", v "
                                       << s.orders.p_corrected << ", end error "

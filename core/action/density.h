@@ -95,7 +95,7 @@ enum class Depends { kPosition, kVelocity, kBoth };
 
 // ∂f/∂m and ∂²f/∂m∂p of the ± density f at m = 0, p = (x₊, v₊), m = (x₋, v₋).
 template <class Real, int d>
-using Diagonal = ad::MixedDerivatives<Real, 2 * d, 2 * d>;
+using Diagonal = autodiff::MixedDerivatives<Real, 2 * d, 2 * d>;
 template <class Real, int d>
 using DiagonalVector = Eigen::Matrix<Real, 2 * d, 1>;
 
@@ -106,13 +106,13 @@ using DiagonalVector = Eigen::Matrix<Real, 2 * d, 1>;
 template <Depends kDep, int d, class Real, class F>
 void AddLagrangianTerm(const F& term, const Real* p, Diagonal<Real, d>& out) {
   if constexpr (kDep == Depends::kBoth) {
-    const auto h = ad::Hessian<Real, 2 * d>(
+    const auto h = autodiff::Hessian<Real, 2 * d>(
         [&](const auto* z) { return term(z, z + d); }, p);
     out.dm += h.gradient;
     out.dmp += h.hessian;
   } else {
     constexpr int off = kDep == Depends::kPosition ? 0 : d;
-    const auto h = ad::Hessian<Real, d>(
+    const auto h = autodiff::Hessian<Real, d>(
         [&](const auto* z) {
           using T = std::remove_cvref_t<decltype(*z)>;
           const T* none = nullptr;
@@ -129,13 +129,13 @@ template <Depends kDep, int d, class Real, class F>
 void AddLagrangianTermGradient(const F& term, const Real* p,
                                DiagonalVector<Real, d>& out) {
   if constexpr (kDep == Depends::kBoth) {
-    out += ad::Gradient<Real, 2 * d>(
+    out += autodiff::Gradient<Real, 2 * d>(
                [&](const auto* z) { return term(z, z + d); }, p)
                .second;
   } else {
     constexpr int off = kDep == Depends::kPosition ? 0 : d;
     out.template segment<d>(off) +=
-        ad::Gradient<Real, d>(
+        autodiff::Gradient<Real, d>(
             [&](const auto* z) {
               using T = std::remove_cvref_t<decltype(*z)>;
               const T* none = nullptr;
@@ -150,7 +150,7 @@ void AddLagrangianTermGradient(const F& term, const Real* p,
 template <int d, class Real, class F>
 void AddLambdaTerm(const F& lambda, const Real* p, Diagonal<Real, d>& out) {
   const Real m[2 * d] = {};
-  const auto lam = ad::Mixed<Real, 2 * d, 2 * d>(
+  const auto lam = autodiff::Mixed<Real, 2 * d, 2 * d>(
       [&](const auto* pv, const auto* mv) {
         return LambdaTermPlusMinus<d>(lambda, pv, pv + d, mv, mv + d);
       },
@@ -163,7 +163,7 @@ template <int d, class Real, class F>
 void AddLambdaTermGradient(const F& lambda, const Real* p,
                            DiagonalVector<Real, d>& out) {
   const Real m[2 * d] = {};
-  out += ad::MinusGradient<Real, 2 * d, 2 * d>(
+  out += autodiff::MinusGradient<Real, 2 * d, 2 * d>(
       [&](const auto* pv, const auto* mv) {
         return LambdaTermPlusMinus<d>(lambda, pv, pv + d, mv, mv + d);
       },
@@ -227,7 +227,7 @@ Eigen::Matrix<Real, 2 * P::kDim, 2 * P::kDim> LagrangianHessian(
     z[c] = x[c];
     z[d + c] = v[c];
   }
-  return ad::Hessian<Real, 2 * d>(
+  return autodiff::Hessian<Real, 2 * d>(
              [&](const auto* s) { return problem(s, s + d); }, z)
       .hessian;
 }
@@ -253,7 +253,7 @@ Eigen::Matrix<Real, P::kDim, P::kDim> FirstOrderCoefficient(const P& problem,
     p[d + c] = v[c];
     m[c] = m[d + c] = Real(0);
   }
-  const auto mixed = ad::Mixed<Real, 2 * d, 2 * d>(
+  const auto mixed = autodiff::Mixed<Real, 2 * d, 2 * d>(
       [&](const auto* pv, const auto* mv) {
         return DensityPlusMinus(problem, pv, pv + d, mv, mv + d);
       },

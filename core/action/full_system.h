@@ -113,7 +113,7 @@ class FullSystem {
     for (int i = 0; i < n_; ++i) {
       Real z[4 * d];
       NodeValues(x, v, i, z);
-      const auto grad = ad::Gradient<Real, 4 * d>(DensityOf(), z).second;
+      const auto grad = autodiff::Gradient<Real, 4 * d>(DensityOf(), z).second;
       const Real h = D.NormWeight(i);
       for (int a = 0; a < 2; ++a)
         for (int c = 0; c < d; ++c) {
@@ -169,7 +169,8 @@ class FullSystem {
       Real z[4 * d];
       NodeValues(x, v, i, z);
       const Eigen::Matrix<Real, 4 * d, 4 * d> hess =
-          D.NormWeight(i) * ad::Hessian<Real, 4 * d>(DensityOf(), z).hessian;
+          D.NormWeight(i) *
+          autodiff::Hessian<Real, 4 * d>(DensityOf(), z).hessian;
       const LocalMap<Real> map = MakeLocalMap(dbar_, i);
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b) {

@@ -17,7 +17,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
-namespace vivp::ad {
+namespace vivp::autodiff {
 
 template <class Real, int K>
 using First = Eigen::AutoDiffScalar<Eigen::Matrix<Real, K, 1>>;
@@ -111,4 +111,4 @@ Eigen::Matrix<Real, M, 1> MinusGradient(const F& f, const Real* p,
   return f(pv, mv).derivatives();
 }
 
-}  // namespace vivp::ad
+}  // namespace vivp::autodiff

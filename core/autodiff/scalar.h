@@ -15,7 +15,7 @@
 
 #include <type_traits>
 
-namespace vivp {
+namespace vivp::autodiff {
 
 template <class T>
 struct RealOfImpl {
@@ -74,4 +74,4 @@ RealOf<T> ValueOf(const T& x) {
   }
 }
 
-}  // namespace vivp
+}  // namespace vivp::autodiff

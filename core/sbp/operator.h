@@ -100,11 +100,11 @@ class Operator {
   T ApplyRow(int i, const T* u) const {
     const Row rw = row(i);
     const T& ref = u[i];
-    T acc = Lift<T>(Real(0));
+    T acc = autodiff::Lift<T>(Real(0));
     for (std::size_t j = 0; j < rw.coeffs.size(); ++j)
       if (rw.coeffs[j] != Real(0))
-        AddScaled(acc, rw.coeffs[j], T(u[rw.first + j] - ref));
-    return Scaled(inv_dt_, acc);
+        autodiff::AddScaled(acc, rw.coeffs[j], T(u[rw.first + j] - ref));
+    return autodiff::Scaled(inv_dt_, acc);
   }
 
   template <class T>

@@ -71,10 +71,10 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
   // ApplyRow without the reference subtraction.
   for (int i = r; i < n_ - r; ++i) {
     const T* ui = u.data() + i;
-    T acc = Lift<T>(Real(0));
+    T acc = autodiff::Lift<T>(Real(0));
     for (int k = 1; k <= half_width_; ++k)
-      AddScaled(acc, interior_[half_width_ + k], T(ui[k] - ui[-k]));
-    out[i] = Scaled(inv_dt_, acc);
+      autodiff::AddScaled(acc, interior_[half_width_ + k], T(ui[k] - ui[-k]));
+    out[i] = autodiff::Scaled(inv_dt_, acc);
   }
   for (int i = n_ - r; i < n_; ++i) out[i] = ApplyRow(i, u.data());
 }
@@ -90,9 +90,11 @@ void Operator<Real>::ApplyTranspose(std::span<const T> u,
   // and so inherits its exact annihilation of constants: DᵀHD·1 = 0 exactly,
   // which an assembled DᵀHD does not give (docs/method.md §6).
   std::vector<T> g(u.size());
-  for (int i = 0; i < n_; ++i) g[i] = Scaled(Real(1) / NormWeight(i), u[i]);
+  for (int i = 0; i < n_; ++i)
+    g[i] = autodiff::Scaled(Real(1) / NormWeight(i), u[i]);
   Apply(std::span<const T>(g), out);
-  for (int i = 0; i < n_; ++i) out[i] = Scaled(-NormWeight(i), out[i]);
+  for (int i = 0; i < n_; ++i)
+    out[i] = autodiff::Scaled(-NormWeight(i), out[i]);
   out[0] = out[0] - g[0];
   out[n_ - 1] = out[n_ - 1] + g[n_ - 1];
 }
@@ -101,8 +103,8 @@ template <class Real>
 template <class T>
 T Operator<Real>::Integrate(std::span<const T> u) const {
   CheckSize(u.size(), u.size());
-  T acc = Lift<T>(Real(0));
-  for (int i = 0; i < n_; ++i) AddScaled(acc, NormWeight(i), u[i]);
+  T acc = autodiff::Lift<T>(Real(0));
+  for (int i = 0; i < n_; ++i) autodiff::AddScaled(acc, NormWeight(i), u[i]);
   return acc;
 }
 

@@ -41,14 +41,14 @@ class RegularizedOperator {
   template <class T>
   T ApplyRow(int i, const T* x, const T& x_initial) const {
     T out = d_.ApplyRow(i, x);
-    if (i == 0) AddScaled(out, penalty_, T(x[0] - x_initial));
+    if (i == 0) autodiff::AddScaled(out, penalty_, T(x[0] - x_initial));
     return out;
   }
 
   template <class T>
   void Apply(std::span<const T> x, const T& x_initial, std::span<T> out) const {
     d_.Apply(x, out);
-    AddScaled(out[0], penalty_, T(x[0] - x_initial));
+    autodiff::AddScaled(out[0], penalty_, T(x[0] - x_initial));
   }
 
   // The (N+1)x(N+1) affine matrix [[D - sigma0 H^{-1}E0, b], [0, 1]] with

@@ -23,7 +23,7 @@ void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku,
              std::size_t trans_len);
 }
 
-namespace vivp::solvers {
+namespace vivp::variational {
 
 template <class Real>
 class BandedLu {
@@ -108,4 +108,4 @@ class BandedLu {
   Eigen::SparseLU<Eigen::SparseMatrix<Real>, Eigen::COLAMDOrdering<int>> lu_;
 };
 
-}  // namespace vivp::solvers
+}  // namespace vivp::variational

@@ -23,7 +23,7 @@
 
 #include "solvers/variational/solve_ivp.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 namespace detail {
 
@@ -201,10 +201,11 @@ double GradientRoundOff(const System& full, const std::vector<double>& u,
 // the initial guess (Newton reaches eps on these problems), or to its
 // round-off level — a start already close to the solution (a march's window
 // from its predictor) cannot fall by sqrt(eps) below that.
-inline solvers::NewtonReport LmReport(const ceres::Solver::Summary& summary,
-                                      double initial_gradient,
-                                      double final_gradient, double roundoff) {
-  solvers::NewtonReport report;
+inline variational::NewtonReport LmReport(const ceres::Solver::Summary& summary,
+                                          double initial_gradient,
+                                          double final_gradient,
+                                          double roundoff) {
+  variational::NewtonReport report;
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;
   report.corrections = report.iterations;
   report.residual_norm = final_gradient;
@@ -242,7 +243,7 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
       linalg::ProbeBand(full, u.data(), full.points(), 32);
   std::vector<double> g(full.size());
   full.Residual(u.data(), g.data());
-  const double initial_gradient = solvers::detail::MaxAbs(g);
+  const double initial_gradient = variational::detail::MaxAbs(g);
   detail::GradientCache<System> cache(full, u, probe.kl, probe.ku);
 
   ceres::Problem::Options problem_options;
@@ -255,9 +256,9 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   ceres::Solve(detail::LmOptions(ceres_options), &cp, &summary);
 
   full.Residual(u.data(), g.data());
-  solvers::NewtonReport report =
-      detail::LmReport(summary, initial_gradient, solvers::detail::MaxAbs(g),
-                       detail::GradientRoundOff(full, u, probe));
+  variational::NewtonReport report = detail::LmReport(
+      summary, initial_gradient, variational::detail::MaxAbs(g),
+      detail::GradientRoundOff(full, u, probe));
   report.seconds.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -267,4 +268,4 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
   return s;
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

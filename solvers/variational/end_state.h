@@ -13,7 +13,7 @@
 #include "core/autodiff/pointwise.h"
 #include "solvers/variational/ivp_types.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 // The velocity v with ∂L/∂ẋ(x, v) = p, by Newton from the guess v:
 // v ← v + M(x, v)⁻¹ (p − ∂L/∂ẋ(x, v)), M = ∂²L/∂ẋ². The guess M⁻¹p is the
@@ -30,7 +30,7 @@ Eigen::Matrix<Real, P::kDim, 1> VelocityOfMomentum(
   for (int c = 0; c < d; ++c) z[c] = x[c];
   for (int step = 0; step < 4; ++step) {
     for (int c = 0; c < d; ++c) z[d + c] = v[c];
-    const auto h = ad::Hessian<Real, 2 * d>(
+    const auto h = autodiff::Hessian<Real, 2 * d>(
         [&](const auto* y) { return problem(y, y + d); }, z);
     const Eigen::Matrix<Real, d, 1> r = p - h.gradient.template tail<d>();
     const Real scale =
@@ -92,4 +92,4 @@ CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
   return e;
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

@@ -7,7 +7,7 @@
 
 #include "solvers/variational/newton.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 struct InitialData {
   std::vector<double> x;  // x(t_start), one entry per degree of freedom
@@ -38,7 +38,7 @@ inline const char* PathName(Path p) {
 
 struct SolveOptions {
   Path path = Path::kReducedNewton;
-  solvers::NewtonOptions newton;
+  variational::NewtonOptions newton;
   // Reduced Newton in double: evaluate the refinement residual in long double
   // (mixed-precision iterative refinement). Removes the round-off that the
   // Nt³ conditioning amplifies (free fall SBP42 exact to 1 ulp at Nt = 65536;
@@ -82,10 +82,10 @@ struct IvpSolution {
   double gradient_norm = 0;        // ‖∇S‖∞ of the full doubled action
   double residual_norm = 0;        // ‖F‖∞ of the system that was solved
   double max_path_difference = 0;  // max |x1 − x2|
-  solvers::Timings seconds;
+  variational::Timings seconds;
 
   int points() const { return static_cast<int>(t.size()); }
   int dof() const { return static_cast<int>(x1.cols()); }
 };
 
-}  // namespace vivp
+}  // namespace vivp::variational

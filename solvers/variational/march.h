@@ -46,7 +46,7 @@
 #include "solvers/variational/march_uniform.h"
 #include "solvers/variational/solve_ivp.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 template <action::LagrangianProblem P>
 MarchResult MarchIvp(const P& problem, const InitialData& initial,
@@ -113,4 +113,4 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   return out;
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

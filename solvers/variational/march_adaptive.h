@@ -9,7 +9,7 @@
 
 #include "solvers/variational/march_core.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 template <class P>
 class AdaptiveMarch : public MarchCore<P> {
@@ -252,4 +252,4 @@ class AdaptiveMarch : public MarchCore<P> {
   bool tried_between_ = false;
 };
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

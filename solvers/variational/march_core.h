@@ -14,7 +14,7 @@
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/window_solve.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 template <class P>
 class MarchCore {
@@ -157,4 +157,4 @@ class MarchCore {
   WindowSolver<P> solver_;
 };
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

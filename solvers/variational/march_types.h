@@ -10,7 +10,7 @@
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/step_control.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 enum class HandOff { kCorrected, kNaive };
 
@@ -109,4 +109,4 @@ struct MarchResult {
 using NodeObserver =
     std::function<void(double, const double *, const double *)>;
 
-}  // namespace vivp
+}  // namespace vivp::variational

@@ -8,7 +8,7 @@
 
 #include "solvers/variational/march_core.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 template <class P>
 class UniformMarch : public MarchCore<P> {
@@ -128,4 +128,4 @@ class UniformMarch : public MarchCore<P> {
   int refine_ = 1;  // solve grid = requested grid refined this many times
 };
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

@@ -37,7 +37,7 @@
 #include "core/linalg/banded.h"
 #include "solvers/variational/banded_lu.h"
 
-namespace vivp::solvers {
+namespace vivp::variational {
 
 struct NewtonOptions {
   int max_iterations = 50;
@@ -261,4 +261,4 @@ NewtonReport Newton(
                            std::to_string(report.last_step) + ")");
 }
 
-}  // namespace vivp::solvers
+}  // namespace vivp::variational

@@ -17,7 +17,7 @@
 
 #include "core/action/euler_lagrange.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 template <class P>
 class OdeReference {
@@ -120,4 +120,4 @@ class OdeReference {
       stepper_;
 };
 
-}  // namespace vivp
+}  // namespace vivp::variational

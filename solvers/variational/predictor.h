@@ -29,7 +29,7 @@
 #include "core/action/density.h"
 #include "core/action/euler_lagrange.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 struct PredictorReport {
   bool ok = true;
@@ -110,7 +110,7 @@ class Predictor {
       z[c] = x[c];
       z[d + c] = v[c];
     }
-    const auto g = ad::Gradient<double, 2 * d>(
+    const auto g = autodiff::Gradient<double, 2 * d>(
                        [&](const auto* q) { return problem_(q, q + d); }, z)
                        .second;
     std::array<double, d> p;
@@ -157,4 +157,4 @@ class Predictor {
   mutable action::StateVector<P> velocity_ = action::StateVector<P>::Zero();
 };
 
-}  // namespace vivp
+}  // namespace vivp::variational

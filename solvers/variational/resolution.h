@@ -18,7 +18,7 @@
 
 #include "core/action/density.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 inline double StabilityLimit(std::string_view op) {
   if (op == "sbp21") return 0.70;
@@ -44,4 +44,4 @@ double FastestFrequency(const P& problem, const double* x, const double* v) {
   return std::sqrt(w2);
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

@@ -2,17 +2,20 @@
 // SBP action (Rothkopf & Nordström 2023; docs/method.md §4–§8):
 //
 //   vivp::problems::Anharmonic anharmonic;
-//   const vivp::InitialData initial{.x = {1.0}, .v = {0.3}};
-//   const vivp::Grid grid{.op = "sbp42", .points = 4097, .t_end = 10.0};
+//   const vivp::variational::InitialData initial{.x = {1.0}, .v = {0.3}};
+//   const vivp::variational::Grid grid{.op = "sbp42", .points = 4097, .t_end
+//   = 10.0};
 //   // one global solve: reduced Newton (default), full Newton or Ceres LM
-//   auto sol = vivp::Solve(anharmonic, initial, grid, {.path = ...});
+//   auto sol = vivp::variational::Solve(anharmonic, initial, grid, {.path =
+//   ...});
 //   // a march in windows (uniform, or under error control with a
 //   // tolerance), each window by the same three paths
-//   vivp::MarchOptions march;
-//   march.window_points = vivp::DefaultWindowPoints(vivp::Path::kCeresLm,
+//   vivp::variational::MarchOptions march;
+//   march.window_points =
+//   vivp::variational::DefaultWindowPoints(vivp::variational::Path::kCeresLm,
 //                                                   grid.op);
-//   march.solve.path = vivp::Path::kCeresLm;
-//   auto marched = vivp::Solve(anharmonic, initial, grid, march);
+//   march.solve.path = vivp::variational::Path::kCeresLm;
+//   auto marched = vivp::variational::Solve(anharmonic, initial, grid, march);
 //
 // Either form checks the combination first (solver_choice.h) and throws
 // std::invalid_argument with the sentence a front end shows. The paths
@@ -27,7 +30,7 @@
 #include "solvers/variational/solve_ivp.h"
 #include "solvers/variational/solver_choice.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 namespace detail {
 
@@ -65,4 +68,4 @@ MarchResult Solve(const P& problem, const InitialData& initial,
   return MarchIvp(problem, initial, grid, options, observer);
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

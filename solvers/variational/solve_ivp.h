@@ -2,7 +2,8 @@
 // the critical point of the doubled SBP action (Rothkopf & Nordström 2023).
 //
 //   vivp::problems::Anharmonic anharmonic;                 // L = ½ẋ² − ¼κx⁴
-//   auto sol = vivp::SolveIvp(anharmonic, {.x = {1.0}, .v = {0.3}},
+//   auto sol = vivp::variational::SolveIvp(anharmonic, {.x = {1.0}, .v =
+//   {0.3}},
 //                             {.op = "sbp42", .points = 256, .t_end = 1.0});
 //   if (!sol.status.converged) ... sol.status.reason ...
 //   sol.x1(sol.points() - 1, 0);        // x(T)
@@ -43,7 +44,7 @@
 #include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 namespace detail {
 
@@ -60,7 +61,7 @@ IvpSolution<Real> Finish(const P& problem,
                          const sbp::RegularizedOperator<Real>& dbar,
                          const action::FullSystem<P, Real>& full,
                          const std::vector<Real>& u,
-                         const solvers::NewtonReport& report, Path path) {
+                         const variational::NewtonReport& report, Path path) {
   constexpr int d = P::kDim;
   const auto& D = dbar.base();
   const int n = D.points();
@@ -97,7 +98,7 @@ IvpSolution<Real> Finish(const P& problem,
   // ‖∇S‖∞ of the full doubled action at the returned point, for every path.
   std::vector<Real> g(full.size());
   full.Residual(u.data(), g.data());
-  s.gradient_norm = double(solvers::detail::MaxAbs(g));
+  s.gradient_norm = double(variational::detail::MaxAbs(g));
 
   Real xn[d], vn[d];
   for (int c = 0; c < d; ++c) {
@@ -272,7 +273,7 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
   const action::FullSystem<P, Real> full(problem, prep.dbar, prep.x0, prep.v0,
                                          prep.order);
   std::vector<Real> u;
-  solvers::NewtonReport report;
+  variational::NewtonReport report;
   if (options.path == Path::kReducedNewton) {
     const action::ReducedSystem<P, Real> reduced(problem, prep.dbar, prep.x0,
                                                  prep.v0, prep.order);
@@ -292,16 +293,14 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
       const action::ReducedSystem<P, long double> ext(problem, dbar_ext, x0e,
                                                       v0e, prep.order);
       std::vector<long double> ye(reduced.size()), fe(reduced.size());
-      report = solvers::Newton<Real>(reduced, y, options.newton,
-                                     [&](const Real* yy, Real* ff) {
-                                       for (int k = 0; k < reduced.size(); ++k)
-                                         ye[k] = yy[k];
-                                       ext.Residual(ye.data(), fe.data());
-                                       for (int k = 0; k < reduced.size(); ++k)
-                                         ff[k] = Real(fe[k]);
-                                     });
+      report = variational::Newton<Real>(
+          reduced, y, options.newton, [&](const Real* yy, Real* ff) {
+            for (int k = 0; k < reduced.size(); ++k) ye[k] = yy[k];
+            ext.Residual(ye.data(), fe.data());
+            for (int k = 0; k < reduced.size(); ++k) ff[k] = Real(fe[k]);
+          });
     } else {
-      report = solvers::Newton(reduced, y, options.newton);
+      report = variational::Newton(reduced, y, options.newton);
     }
     u.assign(full.size(), Real(0));
     for (int i = 0; i < n; ++i)
@@ -313,10 +312,10 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
     }
   } else if (options.path == Path::kFullNewton) {
     u = prep.FullGuess(full);
-    report = solvers::Newton(full, u, options.newton);
+    report = variational::Newton(full, u, options.newton);
   } else {
     throw std::invalid_argument(
-        "SolveIvp runs the Newton paths; vivp::Solve "
+        "SolveIvp runs the Newton paths; vivp::variational::Solve "
         "(solvers/variational/solve.h) runs Levenberg-Marquardt too");
   }
   IvpSolution<Real> s =
@@ -325,4 +324,4 @@ IvpSolution<Real> SolveIvp(const P& problem, const InitialData& initial,
   return s;
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

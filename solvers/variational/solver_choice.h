@@ -15,7 +15,7 @@
 #include "core/sbp/builder.h"
 #include "solvers/variational/ivp_types.h"
 
-namespace vivp {
+namespace vivp::variational {
 
 // The solver names, in the order of Path (PathName is the other direction).
 inline const std::vector<std::string>& SolverNames() {
@@ -135,4 +135,4 @@ inline Refusal CheckSolveRequest(const SolveRequest& r,
   return {};
 }
 
-}  // namespace vivp
+}  // namespace vivp::variational

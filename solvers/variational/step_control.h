@@ -17,7 +17,7 @@
 #include <cmath>
 #include <string_view>
 
-namespace vivp {
+namespace vivp::variational {
 
 // Like an ODE solver's atol/rtol: a value y is accurate enough when its error
 // is below absolute + relative·|y|. At least one must be positive.
@@ -81,4 +81,4 @@ class StepController {
   bool just_rejected_ = false;
 };
 
-}  // namespace vivp
+}  // namespace vivp::variational

@@ -39,7 +39,7 @@
 #include "solvers/variational/ivp_types.h"
 #include "solvers/variational/predictor.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 // kUnderResolved: Δt·ω above the stability limit (a finer grid helps);
 // kCoarse: check 3 (a uniform grid that does not resolve the solution).
@@ -173,4 +173,4 @@ std::string CheckResolved(const WindowAttempt<d>& a, const PredictorReport& pr,
   return s.str();
 }
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

@@ -5,7 +5,7 @@
 // The Lagrangian does not depend on t, so every window of the same length has
 // the same discrete equations up to the initial data. A linear problem is
 // thus factored once and each window costs back-substitutions and residuals
-// (the chord steps of solvers::Newton with a FactorCache); a nonlinear one
+// (the chord steps of variational::Newton with a FactorCache); a nonlinear one
 // starts each window from the previous window's factorization and refactors
 // only when the chord steps stop contracting. Under error control the step
 // changes from window to window (SetStep): the operators are rebuilt, and the
@@ -22,7 +22,7 @@
 
 #include "solvers/variational/solve_ivp.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 template <class P>
 class WindowEngine {
@@ -72,7 +72,7 @@ class WindowEngine {
   double v(int i, int c) const { return v_[c][i]; }
 
   struct Outcome {
-    solvers::NewtonReport report;
+    variational::NewtonReport report;
     CorrectedEnd<double> end;  // the hand-off state
     State x_end{}, v_end{};    // x_N and (Dx)_N
     // Per component: |M⁻¹λ4| and |(Dx)_N − M⁻¹(−λ3)|, the embedded error
@@ -93,7 +93,7 @@ class WindowEngine {
   // window's factorization. On success the nodes are in x(i, c), and the
   // velocities D x in v(i, c) if `velocities` is set.
   Outcome Solve(const State& x0, const State& v0, const double* guess,
-                const double* lambda3, const solvers::NewtonOptions& newton,
+                const double* lambda3, const variational::NewtonOptions& newton,
                 bool fresh, bool velocities) {
     Outcome o;
     system_.SetInitial(x0, v0);
@@ -106,7 +106,7 @@ class WindowEngine {
       if (order() == 2) y_[system_.Lambda4(c)] = 0.0;
     }
     if (fresh) cache_.valid = false;
-    o.report = solvers::Newton<double>(system_, y_, newton, {}, &cache_);
+    o.report = variational::Newton<double>(system_, y_, newton, {}, &cache_);
     if (!o.report.converged) {
       cache_.valid = false;
       o.failure = o.report.reason;
@@ -209,7 +209,7 @@ class WindowEngine {
   sbp::RegularizedOperator<double> dbar_;
   action::ReducedSystem<P, double> system_;  // refers to dbar_
   std::vector<double> y_;
-  solvers::FactorCache<double> cache_;
+  variational::FactorCache<double> cache_;
   // The last window's corrected end state (the next window's initial data
   // unless a fallback intervened) and ω there; ω < 0: none yet.
   State handed_x_{}, handed_v_{};
@@ -217,4 +217,4 @@ class WindowEngine {
   std::vector<double> xc_[d], v_[d];
 };
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

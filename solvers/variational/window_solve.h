@@ -22,7 +22,7 @@
 #include "solvers/variational/window_checks.h"
 #include "solvers/variational/window_engine.h"
 
-namespace vivp::detail {
+namespace vivp::variational::detail {
 
 template <class P>
 class WindowSolver {
@@ -137,7 +137,7 @@ class WindowSolver {
     const int n = a.points;
     WindowEngine<P>& e = Engine(n, a.dt);
     last_engine_ = &e;
-    solvers::NewtonOptions newton = options_.solve.newton;
+    variational::NewtonOptions newton = options_.solve.newton;
     newton.phase_timings = false;
     newton.final_residual = false;
     // A march hands each window's round-off to the next, and an
@@ -284,4 +284,4 @@ class WindowSolver {
   std::vector<double> tau_, px_, pv_;
 };
 
-}  // namespace vivp::detail
+}  // namespace vivp::variational::detail

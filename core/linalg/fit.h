@@ -8,7 +8,7 @@
 #include <limits>
 #include <span>
 
-namespace vivp {
+namespace vivp::linalg {
 
 struct PowerLawFit {
   double order = std::numeric_limits<double>::quiet_NaN();      // slope p
@@ -42,4 +42,4 @@ inline PowerLawFit FitPowerLaw(std::span<const double> h,
   return fit;
 }
 
-}  // namespace vivp
+}  // namespace vivp::linalg

@@ -1,10 +1,10 @@
-#include "core/spectrum.h"
+#include "core/linalg/spectrum.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace vivp {
+namespace vivp::linalg {
 namespace {
 
 // Safety factor over the n * eps * |A| size of round-off in a computed zero
@@ -91,4 +91,4 @@ Spectrum AnalyzeSpectrum(const Eigen::MatrixXd& a) {
   return out;
 }
 
-}  // namespace vivp
+}  // namespace vivp::linalg

@@ -15,7 +15,7 @@
 #include <complex>
 #include <vector>
 
-namespace vivp {
+namespace vivp::linalg {
 
 struct ZeroEigenvalueStructure {
   int geometric_multiplicity = 0;      // dim ker(A)
@@ -47,4 +47,4 @@ struct Spectrum {
 
 Spectrum AnalyzeSpectrum(const Eigen::MatrixXd& a);
 
-}  // namespace vivp
+}  // namespace vivp::linalg
