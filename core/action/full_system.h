@@ -17,27 +17,22 @@
 
 #include "core/action/density.h"
 #include "core/action/local_map.h"
+#include "core/action/system_base.h"
 #include "core/sbp/regularized.h"
 
 namespace vivp::action {
 
 template <class P, class Real>
-class FullSystem {
+class FullSystem : public SystemBase<P, Real> {
+  using Base = SystemBase<P, Real>;
+  using Base::dbar_, Base::x_init_, Base::v_init_, Base::order_, Base::n_,
+      Base::problem_, Base::ForRow;
+
  public:
   static constexpr int d = P::kDim;
-  using State = std::array<Real, d>;
+  using Base::Base;
+  using typename Base::State;
 
-  FullSystem(const P& problem, const sbp::RegularizedOperator<Real>& dbar,
-             const State& x_init, const State& v_init, int order)
-      : problem_(problem),
-        dbar_(dbar),
-        x_init_(x_init),
-        v_init_(v_init),
-        order_(order),
-        n_(dbar.points()) {}
-
-  int points() const { return n_; }
-  int order() const { return order_; }
   int lead() const { return (order_ == 2 ? 2 : 1) * d; }
   int size() const { return 2 * lead() + 2 * n_ * d; }
 
@@ -53,13 +48,8 @@ class FullSystem {
   void Paths(const Real* u, std::vector<Real> (*x)[d],
              std::vector<Real> (*v)[d]) const {
     for (int a = 0; a < 2; ++a)
-      for (int c = 0; c < d; ++c) {
-        x[a][c].resize(n_);
-        v[a][c].resize(n_);
-        for (int i = 0; i < n_; ++i) x[a][c][i] = u[X(a, i, c)];
-        dbar_.Apply(std::span<const Real>(x[a][c]), x_init_[c],
-                    std::span<Real>(v[a][c]));
-      }
+      this->Path(
+          u, [&](int i, int c) { return X(a, i, c); }, x[a], v[a]);
   }
 
   // The node values z = (x1, v1, x2, v2) at node i.
@@ -121,17 +111,11 @@ class FullSystem {
           w[a][c][i] = grad[2 * a * d + d + c];
         }
     }
-    // D̄ᵀ H w = B w − H D w + penalty·H_0 w_0 e_0 (SBP property; see
-    // ReducedSystem::Residual for why D is applied to w rather than Dᵀ to Hw).
     auto& dw = scratch_.dtw;
-    dw.resize(n_);
     for (int a = 0; a < 2; ++a)
-      for (int c = 0; c < d; ++c) {
-        D.Apply(std::span<const Real>(w[a][c]), std::span<Real>(dw));
-        for (int j = 0; j < n_; ++j) g[X(a, j, c)] -= D.NormWeight(j) * dw[j];
-        g[X(a, 0, c)] += (-dbar_.sigma0() - Real(1)) * w[a][c][0];
-        g[X(a, n_ - 1, c)] += w[a][c][n_ - 1];
-      }
+      for (int c = 0; c < d; ++c)
+        this->AddDbarTransposeHw(w[a][c], dw,
+                                 [&](int j) -> Real& { return g[X(a, j, c)]; });
     for (int c = 0; c < d; ++c) {
       g[Lambda1(c)] = x[0][c][0] - x_init_[c];
       g[X(0, 0, c)] += u[Lambda1(c)];
@@ -211,21 +195,6 @@ class FullSystem {
   }
 
  private:
-  // Calls fn(column, D[i][column]) for the nonzeros of row i of plain D.
-  template <class F>
-  void ForRow(int i, F&& fn) const {
-    const auto& D = dbar_.base();
-    const auto row = D.row(i);
-    for (std::size_t k = 0; k < row.coeffs.size(); ++k)
-      if (row.coeffs[k] != Real(0))
-        fn(row.first + static_cast<int>(k), row.coeffs[k] * D.inv_dt());
-  }
-
-  const P& problem_;
-  const sbp::RegularizedOperator<Real>& dbar_;
-  State x_init_, v_init_;
-  int order_;
-  int n_;
   // Work arrays reused across evaluations (see ReducedSystem).
   struct Scratch {
     std::vector<Real> x[2][d], v[2][d], w[2][d], dtw;

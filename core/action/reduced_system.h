@@ -23,32 +23,25 @@
 
 #include "core/action/density.h"
 #include "core/action/local_map.h"
+#include "core/action/system_base.h"
 #include "core/linalg/banded.h"
 #include "core/sbp/regularized.h"
 
 namespace vivp::action {
 
 template <class P, class Real>
-class ReducedSystem {
+class ReducedSystem : public SystemBase<P, Real> {
+  using Base = SystemBase<P, Real>;
+  using Base::dbar_, Base::x_init_, Base::v_init_, Base::order_, Base::n_,
+      Base::problem_, Base::ForRow;
+
  public:
   static constexpr int d = P::kDim;
-  using State = std::array<Real, d>;
+  using Base::Base;
+  using typename Base::State;
 
-  ReducedSystem(const P& problem, const sbp::RegularizedOperator<Real>& dbar,
-                const State& x_init, const State& v_init, int order)
-      : problem_(problem),
-        dbar_(dbar),
-        x_init_(x_init),
-        v_init_(v_init),
-        order_(order),
-        n_(dbar.points()) {}
-
-  int points() const { return n_; }
-  int order() const { return order_; }
   int multiplier_blocks() const { return order_ == 2 ? 2 : 1; }
   int size() const { return (n_ + multiplier_blocks()) * d; }
-  const sbp::RegularizedOperator<Real>& dbar() const { return dbar_; }
-  const State& x_init() const { return x_init_; }
   // New initial data for the same grid (time-slab marching reuses the
   // system, its scratch space and its Jacobian from window to window).
   void SetInitial(const State& x_init, const State& v_init) {
@@ -65,13 +58,8 @@ class ReducedSystem {
 
   // Positions and regularized velocities v = D̄x̄ of the path, per component.
   void Paths(const Real* y, std::vector<Real>* x, std::vector<Real>* v) const {
-    for (int c = 0; c < d; ++c) {
-      x[c].resize(n_);
-      v[c].resize(n_);
-      for (int i = 0; i < n_; ++i) x[c][i] = y[X(i, c)];
-      dbar_.Apply(std::span<const Real>(x[c]), x_init_[c],
-                  std::span<Real>(v[c]));
-    }
+    this->Path(
+        y, [&](int i, int c) { return X(i, c); }, x, v);
   }
 
   // The density's arguments at node i on the diagonal x₋ = 0: p = (x₊, v₊).
@@ -100,17 +88,10 @@ class ReducedSystem {
         w[c][i] = g[d + c];  // the momentum-like ∂f/∂v₋ at node i
       }
     }
-    // D̄ᵀ H w through the SBP property HD + DᵀH = B: DᵀHw = Bw − H D w, so
-    // the only stencil work is D applied (in its exact-on-constants
-    // difference form) to w; D̄ᵀ = Dᵀ + penalty·E0 adds penalty·H_0 w_0.
     auto& dw = scratch_.dtw;
-    dw.resize(n_);
     for (int c = 0; c < d; ++c) {
-      D.Apply(std::span<const Real>(w[c]), std::span<Real>(dw));
-      for (int j = 0; j < n_; ++j) f[NodeRow(j, c)] -= D.NormWeight(j) * dw[j];
-      f[NodeRow(0, c)] +=
-          (-dbar_.sigma0() - Real(1)) * w[c][0];  // penalty·H_0 = −σ0
-      f[NodeRow(n_ - 1, c)] += w[c][n_ - 1];
+      this->AddDbarTransposeHw(
+          w[c], dw, [&](int j) -> Real& { return f[NodeRow(j, c)]; });
       f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
       f[c] = x[c][0] - x_init_[c];
       if (order_ == 2) {
@@ -169,26 +150,15 @@ class ReducedSystem {
       sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
       sink.Add(c, X(0, c), Real(1));
       if (order_ == 2) {
-        const auto last = D.row(n_ - 1);
-        for (std::size_t k = 0; k < last.coeffs.size(); ++k)
-          if (last.coeffs[k] != Real(0))
-            sink.Add(NodeRow(last.first + static_cast<int>(k), c), Lambda4(c),
-                     last.coeffs[k] * D.inv_dt());
-        const auto first = D.row(0);
-        for (std::size_t k = 0; k < first.coeffs.size(); ++k)
-          if (first.coeffs[k] != Real(0))
-            sink.Add(d + c, X(first.first + static_cast<int>(k), c),
-                     first.coeffs[k] * D.inv_dt());
+        ForRow(n_ - 1, [&](int k, Real dk) {
+          sink.Add(NodeRow(k, c), Lambda4(c), dk);
+        });
+        ForRow(0, [&](int k, Real dk) { sink.Add(d + c, X(k, c), dk); });
       }
     }
   }
 
  private:
-  const P& problem_;
-  const sbp::RegularizedOperator<Real>& dbar_;
-  State x_init_, v_init_;
-  int order_;
-  int n_;
   // Work arrays reused across evaluations: at Nt = 2^20 fresh allocations
   // cost more in page faults than the stencil work. (Not thread-safe: one
   // system per thread.)
