@@ -25,7 +25,10 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS) -- --no-print-directory
 
-demo: build
+# The demo needs only the command line program: the tests, figures and
+# benches are built by `make test`, `make figures` and `make bench`.
+demo: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target vivp -- --no-print-directory
 	./$(BUILD)/apps/vivp run --out $(BUILD)/demo --force
 
 test: build
