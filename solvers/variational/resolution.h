@@ -12,11 +12,11 @@
 // of M⁻¹K with M = ∂²L/∂v², K = −∂²L/∂x², at the initial and final states.
 #pragma once
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <string_view>
 
 #include "core/action/density.h"
+#include "core/linalg/small_eigen.h"
 
 namespace vivp::variational {
 
@@ -34,14 +34,10 @@ template <class P>
 double FastestFrequency(const P& problem, const double* x, const double* v) {
   constexpr int d = P::kDim;
   const auto h = action::LagrangianHessian(problem, x, v);
-  const Eigen::Matrix<double, d, d> m = h.template bottomRightCorner<d, d>();
-  const Eigen::Matrix<double, d, d> k = -h.template topLeftCorner<d, d>();
+  const Eigen::MatrixXd m = h.template bottomRightCorner<d, d>();
+  const Eigen::MatrixXd k = -h.template topLeftCorner<d, d>();
   if (m.cwiseAbs().maxCoeff() == 0.0) return 0.0;
-  const Eigen::Matrix<double, d, d> a = m.fullPivLu().solve(k);
-  const auto ev = a.eigenvalues();
-  double w2 = 0;
-  for (int i = 0; i < d; ++i) w2 = std::max(w2, ev[i].real());
-  return std::sqrt(w2);
+  return std::sqrt(linalg::LargestGeneralizedEigenvalue(k, m));
 }
 
 }  // namespace vivp::variational
