@@ -6,42 +6,18 @@
 // 6th-order central differences). Usage: fig_bea_fig2_momentum [DIR]
 #include <iostream>
 
-#include "report/plot.h"
-#include "studies/bea_experiment.h"
-
-using namespace vivp::bea;
+#include "figures/bea_figures.h"
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const vivp::studies::GaussianWellExperiment experiment;
-  const auto& r = experiment.derivation;
-  const auto& q = experiment.quantities;
-  const auto& potential = experiment.potential;
-  const ConservationSetup s = experiment.Setup(1500);
-  const double h = 0.15;
-  const auto dev = Deviations(r, q, potential, s, h);
-
-  std::vector<std::vector<double>> path, energy;
-  for (int n = 0; n < dev.run.x.rows(); ++n)
-    path.push_back({dev.run.x(n, 0), dev.run.x(n, 1)});
-  for (int n = 0; n < dev.t.size(); ++n)
-    energy.push_back({dev.t(n), dev.deviation(n, 3), dev.deviation(n, 4),
-                      dev.deviation(n, 5)});
-  vivp::report::Figure fig(dir, "fig_bea_fig2_momentum", 1200, 500);
-  const auto p = fig.Data("path", path, "x1 x2");
-  const auto e = fig.Data("momentum", energy, "t dI0 dI2 dI4");
-  fig.script()
-      << "set multiplot layout 1,2\n"
-      << "set size ratio -1\nset xlabel 'x_1'\nset ylabel 'x_2'\n"
-      << "set title 'LMM (4.1), A = -0.2 I, h = 0.15'\n"
-      << "plot '" << p << "' using 1:2 with dots notitle\n"
-      << "set size noratio\nset xlabel 't'\n"
-      << "set ylabel '|I(t) - I(0)|'\nset logscale y\n"
-      << "set format y '10^{%L}'\nset key below\n"
-      << "set title 'modified angular momenta'\n"
-      << "plot '" << e << "' using 1:(abs($2)) with lines title 'l = I_0', '"
-      << e << "' using 1:(abs($3)) with lines title 'I_0 + h^2 I_2', '" << e
-      << "' using 1:(abs($4)) with lines lw 2 title 'I_0 + h^2 I_2 + h^4 I_4'\n"
-      << "unset multiplot\n";
-  std::cout << fig.Render().string() << "\n";
+  std::cout << vivp::figures::GaussianWellFigure(
+                   dir, {.stem = "fig_bea_fig2_momentum",
+                         .name = "momentum",
+                         .title = "angular momenta",
+                         .first_column = 3,
+                         .symbol = "I",
+                         .titles = {"l = I_0", "I_0 + h^2 I_2",
+                                    "I_0 + h^2 I_2 + h^4 I_4"}})
+                   .string()
+            << "\n";
 }
