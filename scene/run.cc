@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "scene/registered.h"
 #include "problems/composed.h"
+#include "scene/registered.h"
 
 namespace vivp::scene {
 
