@@ -116,7 +116,20 @@ template <class L>
 bool Register(Registration<L> r) {
   scene::AddRegistered(
       scene::MakeRegistered<L>(r.name, r.description, r.parameters));
-  return Register(std::move(r), kNotInScenes);
+  detail::AddToBench(r);
+  // The registry solves the scene runner's type with no effects added (L
+  // term for term), so the solver templates are compiled once for both.
+  const scene::SceneProblem<L> problem{L{}, {}};
+  if (r.exact)
+    studies::AddProblem(studies::detail::Entry(
+        r.name, r.description, problem, r.initial,
+        [exact = r.exact](const scene::SceneProblem<L>& p, double t) {
+          return exact(p.user, t);
+        }));
+  else
+    studies::AddProblem(studies::detail::EntryWithReference(
+        r.name, r.description, problem, r.initial));
+  return true;
 }
 
 }  // namespace vivp

@@ -12,6 +12,13 @@
 
 namespace vivp::scene {
 
+// What the scene runner solves for a registered L: L plus the scene's
+// built-in effects. With no effects it is L itself, term for term, and the
+// registry (lagrangians/register.h) solves that same type, so that a
+// Lagrangian offered to both compiles the solvers once, not twice.
+template <class L>
+using SceneProblem = detail::WithUser<L>;
+
 template <class L>
 RegisteredLagrangian MakeRegistered(
     std::string name, std::string description,
