@@ -1,0 +1,1 @@
+// The translation unit that compiles vivp's precompiled header (pch.cmake).
