@@ -94,18 +94,31 @@ void AddToBench(const Registration<L>& r) {
 
 }  // namespace detail
 
+namespace detail {
+
+// Adds `problem` — L itself, or the scene runner's type around it — to the
+// registry; `user_of` finds the L inside it for the closed form.
+template <class L, class P, class UserOf>
+void AddToRegistry(const Registration<L>& r, const P& problem, UserOf user_of) {
+  if (r.exact)
+    studies::AddProblem(studies::detail::Entry(
+        r.name, r.description, problem, r.initial,
+        [exact = r.exact, user_of](const P& p, double t) {
+          return exact(user_of(p), t);
+        }));
+  else
+    studies::AddProblem(studies::detail::EntryWithReference(
+        r.name, r.description, problem, r.initial));
+}
+
+}  // namespace detail
+
 // Adds L to the problems of `vivp converge`, `vivp bench`, the figures and
 // the tests.
 template <class L>
 bool Register(Registration<L> r, NotInScenes) {
   detail::AddToBench(r);
-  const L problem{};
-  if (r.exact)
-    studies::AddProblem(studies::detail::Entry(r.name, r.description, problem,
-                                               r.initial, r.exact));
-  else
-    studies::AddProblem(studies::detail::EntryWithReference(
-        r.name, r.description, problem, r.initial));
+  detail::AddToRegistry(r, L{}, [](const L& l) -> const L& { return l; });
   return true;
 }
 
@@ -119,16 +132,9 @@ bool Register(Registration<L> r) {
   detail::AddToBench(r);
   // The registry solves the scene runner's type with no effects added (L
   // term for term), so the solver templates are compiled once for both.
-  const scene::SceneProblem<L> problem{L{}, {}};
-  if (r.exact)
-    studies::AddProblem(studies::detail::Entry(
-        r.name, r.description, problem, r.initial,
-        [exact = r.exact](const scene::SceneProblem<L>& p, double t) {
-          return exact(p.user, t);
-        }));
-  else
-    studies::AddProblem(studies::detail::EntryWithReference(
-        r.name, r.description, problem, r.initial));
+  detail::AddToRegistry(
+      r, scene::SceneProblem<L>{L{}, {}},
+      [](const scene::SceneProblem<L>& p) -> const L& { return p.user; });
   return true;
 }
 

@@ -4,26 +4,14 @@
 // table is the generated one.
 #define BOOST_TEST_MODULE effect_table
 #include <boost/test/unit_test.hpp>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "scene/catalogue.h"
 #include "scene/scene.h"
-
-namespace {
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-}  // namespace
+#include "tests/readme_quote.h"
 
 BOOST_AUTO_TEST_CASE(Readme_HasTheGeneratedEffectTable) {
-  const std::string readme = Slurp(VIVP_SOURCE_DIR "/README.md");
+  const std::string readme = readme_quote::Slurp(VIVP_SOURCE_DIR "/README.md");
   const std::string table = vivp::scene::EffectTableMarkdown();
   BOOST_TEST(readme.find(table) != std::string::npos,
              "README.md's effect table is out of date; run "

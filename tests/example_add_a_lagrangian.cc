@@ -14,9 +14,9 @@ vivp::variational::IvpSolution<double> Gyrate() {
 
 #define BOOST_TEST_MODULE example_add_a_lagrangian
 #include <boost/test/unit_test.hpp>
-#include <fstream>
-#include <iterator>
 #include <string>
+
+#include "tests/readme_quote.h"
 
 BOOST_AUTO_TEST_CASE(CyclotronExample_FollowsTheExactCircle) {
   // With ẋ(0) = (0, −B·1) the charge circles the origin at radius 1 and
@@ -33,33 +33,10 @@ BOOST_AUTO_TEST_CASE(CyclotronExample_FollowsTheExactCircle) {
   BOOST_TEST(worst > 0.0);  // a discretization, not a copy of the answer
 }
 
-namespace {
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  BOOST_REQUIRE_MESSAGE(in, "cannot read " << path);
-  return std::string((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
-}
-
-// The text between the example markers of a source file.
-std::string Example(const std::string& path) {
-  const std::string s = Slurp(path);
-  const std::string begin = "// --- example ---\n";
-  const auto b = s.find(begin);
-  const auto e = s.find("// --- end of example ---");
-  BOOST_REQUIRE(b != std::string::npos && e != std::string::npos && b < e);
-  return s.substr(b + begin.size(), e - b - begin.size());
-}
-
-}  // namespace
-
 BOOST_AUTO_TEST_CASE(Readme_ShowsTheCompiledExampleVerbatim) {
-  const std::string readme = Slurp(VIVP_SOURCE_DIR "/README.md");
   for (const char* file : {"/problems/cyclotron.h", "/lagrangians/cyclotron.cc",
-                           "/tests/example_add_a_lagrangian.cc"}) {
-    const std::string code = Example(std::string(VIVP_SOURCE_DIR) + file);
-    BOOST_TEST(readme.find("```cpp\n" + code + "```") != std::string::npos,
+                           "/tests/example_add_a_lagrangian.cc"})
+    BOOST_TEST(readme_quote::ReadmeShows(
+                   readme_quote::Example(std::string(VIVP_SOURCE_DIR) + file)),
                "README does not show the example of " << file);
-  }
 }

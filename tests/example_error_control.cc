@@ -18,9 +18,9 @@ vivp::variational::MarchResult TenOrbits() {
 
 #define BOOST_TEST_MODULE example_error_control
 #include <boost/test/unit_test.hpp>
-#include <fstream>
-#include <iterator>
 #include <string>
+
+#include "tests/readme_quote.h"
 
 BOOST_AUTO_TEST_CASE(TenOrbitsExample_EndsOnTheExactOrbit) {
   const vivp::variational::MarchResult m = TenOrbits();
@@ -37,25 +37,7 @@ BOOST_AUTO_TEST_CASE(TenOrbitsExample_EndsOnTheExactOrbit) {
   BOOST_TEST(m.points < 40000);  // measured 20493; uniform: 256001 for 2e-10
 }
 
-namespace {
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  BOOST_REQUIRE_MESSAGE(in, "cannot read " << path);
-  return std::string((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
-}
-
-}  // namespace
-
 BOOST_AUTO_TEST_CASE(Readme_ShowsTheCompiledExampleVerbatim) {
-  const std::string s =
-      Slurp(VIVP_SOURCE_DIR "/tests/example_error_control.cc");
-  const std::string begin = "// --- example ---\n";
-  const auto b = s.find(begin);
-  const auto e = s.find("// --- end of example ---");
-  BOOST_REQUIRE(b != std::string::npos && e != std::string::npos && b < e);
-  const std::string code = s.substr(b + begin.size(), e - b - begin.size());
-  const std::string readme = Slurp(VIVP_SOURCE_DIR "/README.md");
-  BOOST_TEST(readme.find("```cpp\n" + code + "```") != std::string::npos);
+  BOOST_TEST(readme_quote::ReadmeShows(readme_quote::Example(
+      VIVP_SOURCE_DIR "/tests/example_error_control.cc")));
 }

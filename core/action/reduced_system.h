@@ -95,6 +95,9 @@ class ReducedSystem : public SystemBase<P, Real> {
       f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
       f[c] = x[c][0] - x_init_[c];
       if (order_ == 2) {
+        // λ4·(last row of D) by hand rather than ForRow: ForRow's
+        // λ4·(c·(1/Δt)) rounds differently from (λ4·c)·(1/Δt) and would
+        // move last digits of every marched result.
         const auto row = D.row(n_ - 1);
         for (std::size_t k = 0; k < row.coeffs.size(); ++k)
           f[NodeRow(row.first + static_cast<int>(k), c)] +=

@@ -8,7 +8,8 @@
 
 namespace vivp::linalg {
 
-// NaN-free for singular M only if the caller excludes M = 0 first.
+// M = 0 (a first-order system, no oscillation) is the caller's case to
+// handle; a singular nonzero M is solved by full-pivoting LU.
 double LargestGeneralizedEigenvalue(const Eigen::MatrixXd& k,
                                     const Eigen::MatrixXd& m);
 
