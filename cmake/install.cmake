@@ -57,10 +57,12 @@ install(TARGETS ${_vivp_targets} vivp_lagrangians vivp_lagrangians_linked
         OBJECTS DESTINATION ${CMAKE_INSTALL_LIBDIR}/vivp
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vivp)
 install(TARGETS vivp RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# No header is generated: scene/run_dof.cc.in makes sources only.
 install(DIRECTORY core problems solvers studies scene report lagrangians
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vivp
         FILES_MATCHING PATTERN "*.h")
+# The one generated header: the dimensions compiled into the libraries.
+install(FILES ${VIVP_GENERATED_DIR}/core/action/precompiled_dims.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/vivp/core/action)
 install(EXPORT vivpTargets NAMESPACE vivp::
         DESTINATION ${VIVP_INSTALL_CMAKEDIR})
 

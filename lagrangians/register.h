@@ -28,7 +28,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/action/density.h"
+#include "core/action/erased_problem.h"
 #include "scene/register_lagrangian.h"
 #include "studies/bench_lagrangian.h"
 #include "studies/registry_entry.h"
@@ -96,19 +96,18 @@ void AddToBench(const Registration<L>& r) {
 
 namespace detail {
 
-// Adds `problem` — L itself, or the scene runner's type around it — to the
-// registry; `user_of` finds the L inside it for the closed form.
-template <class L, class P, class UserOf>
-void AddToRegistry(const Registration<L>& r, const P& problem, UserOf user_of) {
-  if (r.exact)
-    studies::AddProblem(studies::detail::Entry(
-        r.name, r.description, problem, r.initial,
-        [exact = r.exact, user_of](const P& p, double t) {
-          return exact(user_of(p), t);
-        }));
-  else
-    studies::AddProblem(studies::detail::EntryWithReference(
-        r.name, r.description, problem, r.initial));
+// Adds L, behind its pointwise derivatives, to the registry: the solvers it
+// is handed to are compiled once per dimension in the libraries.
+template <class L>
+void AddToRegistry(const Registration<L>& r) {
+  static_assert(action::IsPrecompiledDim(L::kDim),
+                "L::kDim is not among the numbers of coordinates the "
+                "libraries are compiled for: add it to VIVP_DIMS "
+                "(cmake -DVIVP_DIMS=\"1;2;3;8;...\")");
+  std::function<studies::ExactState(double)> exact;
+  if (r.exact) exact = [f = r.exact, l = L{}](double t) { return f(l, t); };
+  studies::AddProblem(studies::Entry(r.name, r.description, action::Erase(L{}),
+                                     r.initial, std::move(exact)));
 }
 
 }  // namespace detail
@@ -118,7 +117,7 @@ void AddToRegistry(const Registration<L>& r, const P& problem, UserOf user_of) {
 template <class L>
 bool Register(Registration<L> r, NotInScenes) {
   detail::AddToBench(r);
-  detail::AddToRegistry(r, L{}, [](const L& l) -> const L& { return l; });
+  detail::AddToRegistry(r);
   return true;
 }
 
@@ -129,13 +128,7 @@ template <class L>
 bool Register(Registration<L> r) {
   scene::AddRegistered(
       scene::MakeRegistered<L>(r.name, r.description, r.parameters));
-  detail::AddToBench(r);
-  // The registry solves the scene runner's type with no effects added (L
-  // term for term), so the solver templates are compiled once for both.
-  detail::AddToRegistry(
-      r, scene::SceneProblem<L>{L{}, {}},
-      [](const scene::SceneProblem<L>& p) -> const L& { return p.user; });
-  return true;
+  return Register(std::move(r), kNotInScenes);
 }
 
 }  // namespace vivp

@@ -212,7 +212,8 @@ void CheckDof(const TomlReader& r, const toml::node& dof_node, const Scene& s) {
           dof_node,
           "dof = " + std::to_string(s.dof) + " is not among the compiled sizes",
           "expected one of " + Join(names) +
-              " (add the size to VIVP_SCENE_DOFS in apps/CMakeLists.txt)");
+              " (configure with the size added to VIVP_DIMS, e.g. cmake "
+              "-DVIVP_DIMS=\"1;2;3;8;4\")");
     }
   }
 }

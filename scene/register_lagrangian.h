@@ -1,23 +1,27 @@
-// How a C++ Lagrangian becomes a scene type (registered.h): the scene runner
-// instantiated for the struct, and its double members a scene may set.
-// lagrangians/register.h calls this for every registration.
+// How a C++ Lagrangian becomes a scene type (registered.h): its double
+// members a scene may set, and a run that hands L, behind its pointwise
+// derivatives, to the scene runner compiled once per dimension
+// (RunRegistered). lagrangians/register.h calls this for every
+// registration.
 #pragma once
 
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/action/erased_problem.h"
 #include "scene/registered.h"
-#include "scene/run_impl.h"
+#include "scene/run.h"
 
 namespace vivp::scene {
 
-// What the scene runner solves for a registered L: L plus the scene's
-// built-in effects. With no effects it is L itself, term for term, and the
-// registry (lagrangians/register.h) solves that same type, so that a
-// Lagrangian offered to both compiles the solvers once, not twice.
-template <class L>
-using SceneProblem = detail::WithUser<L>;
+namespace detail {
+// L + the scene's built-in effects, solved as the scene says (run_impl.h;
+// compiled for each d of VIVP_DIMS in run_dof.cc.in).
+template <int D>
+RunOutcome RunRegistered(const action::ErasedProblem<D>& user, const Scene& s,
+                         RunSink& sink);
+}  // namespace detail
 
 template <class L>
 RegisteredLagrangian MakeRegistered(
@@ -43,7 +47,7 @@ RegisteredLagrangian MakeRegistered(
       if (e.type->name == type_name)
         for (const auto& [key, member] : parameters)
           user.*member = e.values.at(key).at(0);
-    return detail::RunWithUser(user, s, sink);
+    return detail::RunRegistered(action::Erase(user), s, sink);
   };
   return r;
 }

@@ -1,7 +1,9 @@
 #include "scene/run.h"
 
-#include <utility>
+#include <stdexcept>
+#include <string>
 
+#include "core/action/precompiled_dims.h"
 #include "problems/composed.h"
 #include "scene/registered.h"
 
@@ -19,23 +21,22 @@ std::vector<problems::Effect> BuiltInEffects(const Scene& s) {
   return out;
 }
 
-// VIVP_SCENE_DOFS (set by CMake) lists the sizes with a run_dof file.
-template <int... Ds>
-RunOutcome Dispatch(const Scene& s, RunSink& sink,
-                    std::integer_sequence<int, Ds...>) {
-  RunOutcome out;
-  const bool found =
-      ((s.dof == Ds ? (out = RunEffects<Ds>(s, sink), true) : false) || ...);
-  if (!found)
-    throw std::invalid_argument("dof = " + std::to_string(s.dof) +
-                                " is not among the compiled sizes");
-  return out;
+// The sizes with a run_dof file (VIVP_DIMS in CMake).
+RunOutcome Dispatch(const Scene& s, RunSink& sink) {
+#define VIVP_RUN_DIM(D) \
+  if (s.dof == D) return RunEffects<D>(s, sink);
+  VIVP_PRECOMPILED_DIMS(VIVP_RUN_DIM)
+#undef VIVP_RUN_DIM
+  throw std::invalid_argument("dof = " + std::to_string(s.dof) +
+                              " is not among the compiled sizes");
 }
 
 }  // namespace detail
 
 const std::vector<int>& SupportedDofs() {
-  static const std::vector<int> dofs = {VIVP_SCENE_DOFS};
+#define VIVP_LIST_DIM(D) D,
+  static const std::vector<int> dofs = {VIVP_PRECOMPILED_DIMS(VIVP_LIST_DIM)};
+#undef VIVP_LIST_DIM
   return dofs;
 }
 
@@ -54,8 +55,7 @@ std::string StepperUnavailable(const Scene& s) {
 RunOutcome RunScene(const Scene& s, RunSink& sink) {
   if (const EffectType* type = s.registered())
     return FindRegistered(type->name)->run(s, sink);
-  return detail::Dispatch(s, sink,
-                          std::integer_sequence<int, VIVP_SCENE_DOFS>{});
+  return detail::Dispatch(s, sink);
 }
 
 }  // namespace vivp::scene

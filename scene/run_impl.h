@@ -1,5 +1,7 @@
-// The scene runner's templates (run.h), instantiated once per supported DOF
-// count (run_dof.cc.in) and once per registered Lagrangian (registered.cc).
+// The scene runner's templates (run.h), instantiated once per number of
+// coordinates (run_dof.cc.in). The variational path runs on
+// action::ErasedProblem<d>, so that a registered Lagrangian (RunRegistered)
+// compiles only its pointwise derivatives, not the runner and the solvers.
 #pragma once
 
 #include <chrono>
@@ -7,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "core/autodiff/pointwise.h"
+#include "core/action/erased_problem.h"
 #include "problems/composed.h"
 #include "problems/composed_hamiltonian.h"
 #include "scene/reference.h"
+#include "scene/register_lagrangian.h"
 #include "scene/run.h"
 #include "solvers/steppers/integrate.h"
 #include "solvers/steppers/methods.h"
@@ -25,44 +28,6 @@ inline double Since(Clock::time_point start) {
 
 // The built-in effects of a scene (registered Lagrangians excluded).
 std::vector<problems::Effect> BuiltInEffects(const Scene& s);
-
-// A registered C++ Lagrangian U plus the scene's built-in effects.
-template <class U>
-struct WithUser {
-  static constexpr int kDim = U::kDim;
-  U user;
-  problems::Composed<U::kDim> rest;
-
-  template <class T>
-  T operator()(const T* x, const T* v) const {
-    return user(x, v) + rest(x, v);
-  }
-  template <class T>
-  T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
-    T sum = rest.Lambda(x1, v1, x2, v2);
-    if constexpr (action::HasLambda<U>) sum += user.Lambda(x1, v1, x2, v2);
-    return sum;
-  }
-  template <class Real>
-  void AddDiagonalDerivatives(const Real* p,
-                              action::Diagonal<Real, kDim>& out) const {
-    action::AddLagrangianTerm<action::Depends::kBoth, kDim>(user, p, out);
-    if constexpr (action::HasLambda<U>)
-      action::AddLambdaTerm<kDim>(
-          [&](const auto*... a) { return user.Lambda(a...); }, p, out);
-    rest.AddDiagonalDerivatives(p, out);
-  }
-  template <class Real>
-  void AddDiagonalGradient(const Real* p,
-                           action::DiagonalVector<Real, kDim>& out) const {
-    action::AddLagrangianTermGradient<action::Depends::kBoth, kDim>(user, p,
-                                                                    out);
-    if constexpr (action::HasLambda<U>)
-      action::AddLambdaTermGradient<kDim>(
-          [&](const auto*... a) { return user.Lambda(a...); }, p, out);
-    rest.AddDiagonalGradient(p, out);
-  }
-};
 
 // The per-node columns a scene asks for: diagnostics from the Lagrangian by
 // automatic differentiation (energy v·∂L/∂v − L, momentum ∂L/∂v, angular
@@ -161,8 +126,8 @@ class NodeEmitter {
       z[c] = x[c];
       z[d + c] = v[c];
     }
-    const auto [lagrangian, grad] = autodiff::Gradient<double, 2 * d>(
-        [&](const auto* s) { return problem_(s, s + d); }, z);
+    const auto [lagrangian, grad] =
+        action::LagrangianGradient<double>(problem_, z);
     energy_ = -lagrangian;
     for (int c = 0; c < d; ++c) {
       p[c] = grad[d + c];
@@ -272,11 +237,12 @@ RunOutcome RunVariational(const P& problem, const Scene& s, RunSink& sink) {
 template <int D>
 RunOutcome RunStepper(const problems::Composed<D>& lagrangian, const Scene& s,
                       RunSink& sink) {
+  const action::ErasedProblem<D> erased = action::Erase(lagrangian);
   using H = problems::ComposedHamiltonian<D>;
   const H hamiltonian(lagrangian.effects);
   const steppers::HamiltonianSystem<H> system(hamiltonian);
   auto stepper = steppers::MakeStepper<H>(s.method.kind, system);
-  NodeEmitter<problems::Composed<D>> emit(lagrangian, s, sink);
+  NodeEmitter<action::ErasedProblem<D>> emit(erased, s, sink);
   RunOutcome out;
   out.method = "stepper " + s.method.kind;
   out.solver["reference"] = emit.reference_description();
@@ -324,15 +290,26 @@ RunOutcome RunStepper(const problems::Composed<D>& lagrangian, const Scene& s,
 template <int D>
 RunOutcome RunEffects(const Scene& s, RunSink& sink) {
   const problems::Composed<D> composed{BuiltInEffects(s)};
-  if (s.variational()) return RunVariational(composed, s, sink);
+  if (s.variational()) return RunVariational(action::Erase(composed), s, sink);
   return RunStepper<D>(composed, s, sink);
 }
 
-// A scene with the registered Lagrangian U (variational only).
-template <class U>
-RunOutcome RunWithUser(const U& user, const Scene& s, RunSink& sink) {
-  const WithUser<U> p{user, {BuiltInEffects(s)}};
-  return RunVariational(p, s, sink);
+// A scene with a registered Lagrangian (variational only): the sum of its
+// model and the built-in effects' (erased_problem.h), each compiled once.
+template <int D>
+RunOutcome RunRegistered(const action::ErasedProblem<D>& user, const Scene& s,
+                         RunSink& sink) {
+  return RunVariational(
+      user + action::Erase(problems::Composed<D>{BuiltInEffects(s)}), s, sink);
 }
+
+#define VIVP_EXTERN_RUN(D)                                                   \
+  extern template RunOutcome RunVariational(const action::ErasedProblem<D>&, \
+                                            const Scene&, RunSink&);         \
+  extern template RunOutcome RunEffects<D>(const Scene&, RunSink&);          \
+  extern template RunOutcome RunRegistered(const action::ErasedProblem<D>&,  \
+                                           const Scene&, RunSink&);
+VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_RUN)
+#undef VIVP_EXTERN_RUN
 
 }  // namespace vivp::scene::detail

@@ -1,88 +1,30 @@
-// How a problem joins the registry (registry.h): the solver templates for
-// one problem struct, wrapped in type-erased functions, with its closed form
-// or, without one, a reference computed from its Lagrangian.
+// How a problem joins the registry (registry.h): the problem behind its
+// pointwise derivatives (core/action/erased_problem.h), so that the solvers
+// it is handed to are the ones compiled once per dimension, with its closed
+// form or, without one, a reference computed from its Lagrangian. A light
+// header: the solvers are not parsed where a Lagrangian is registered.
 #pragma once
 
-#include <memory>
+#include <functional>
+#include <string>
 
+#include "core/action/erased_problem.h"
 #include "problems/phase_space.h"
-#include "solvers/variational/ode_reference.h"
-#include "solvers/variational/solve.h"
 #include "studies/registry.h"
 
 namespace vivp::studies {
 
-namespace detail {
-
-template <class P, class ExactFn>
-NamedProblem Entry(std::string name, std::string description, P problem,
-                   variational::InitialData initial, ExactFn exact_fn,
-                   std::string reference = "exact") {
-  NamedProblem e;
-  e.name = std::move(name);
-  e.description = std::move(description);
-  e.initial = initial;
-  e.reference = std::move(reference);
-  e.solve = [problem, initial](const variational::Grid& g,
-                               const variational::SolveOptions& o) {
-    return Solve(problem, initial, g, o);
-  };
-  e.march = [problem, initial](const variational::Grid& g,
-                               const variational::MarchOptions& o,
-                               const variational::NodeObserver& observer) {
-    return Solve(problem, initial, g, o, observer);
-  };
-  e.momentum = [problem](const double* x, const double* v) {
-    // ∂L/∂ẋ: with a vector potential it is not Mẋ.
-    constexpr int d = P::kDim;
-    double z[2 * d];
-    for (int c = 0; c < d; ++c) {
-      z[c] = x[c];
-      z[d + c] = v[c];
-    }
-    const auto g = autodiff::Gradient<double, 2 * d>(
-        [&](const auto* y) { return problem(y, y + d); }, z);
-    return std::vector<double>(g.second.data() + d, g.second.data() + 2 * d);
-  };
-  e.exact = [exact_fn, problem, momentum = e.momentum](double t) {
-    ExactState s = exact_fn(problem, t);
-    // The momentum is the quantity −λ3 approximates (docs/method.md §7).
-    if (!s.v.empty()) s.p = momentum(s.x.data(), s.v.data());
-    return s;
-  };
-  return e;
-}
-
-// A problem without a closed form: the Euler–Lagrange equations of its
-// Lagrangian integrated from its initial data at t = 0 to t
-// (ode_reference.h), one integration kept for the whole study.
-template <class P>
-NamedProblem EntryWithReference(std::string name, std::string description,
-                                P problem, variational::InitialData initial) {
-  struct Shared {
-    explicit Shared(P p) : problem(std::move(p)) {}
-    P problem;
-    std::unique_ptr<variational::OdeReference<P>> ode;  // refers to `problem`
-  };
-  const std::vector<double> zero(P::kDim, 0.0);
-  const int order = action::SystemOrder<double>(
-      problem, initial.x.data(),
-      initial.v.empty() ? zero.data() : initial.v.data());
-  auto shared = std::make_shared<Shared>(problem);
-  shared->ode = std::make_unique<variational::OdeReference<P>>(
-      shared->problem, order, 0.0, initial.x, initial.v, 1.0);
-  auto exact = [shared](const P&, double t) {
-    ExactState s{
-        std::vector<double>(P::kDim), std::vector<double>(P::kDim), {}};
-    shared->ode->State(t, s.x.data(), s.v.data());
-    return s;
-  };
-  return Entry(std::move(name), std::move(description), std::move(problem),
-               std::move(initial), exact,
-               variational::OdeReference<P>::Description());
-}
-
-}  // namespace detail
+// The registry's entry for a problem of d coordinates behind its pointwise
+// derivatives: its solves and marches are the solvers compiled once per
+// dimension, its momentum ∂L/∂ẋ comes from the model, and `exact` is the
+// closed form, or when empty the Euler–Lagrange equations integrated from
+// the initial data at t = 0 (ode_reference.h), one integration kept for
+// the whole study. Compiled per dimension in VIVP_DIMS (registry_entry.cc).
+template <int d>
+NamedProblem Entry(std::string name, std::string description,
+                   action::ErasedProblem<d> problem,
+                   variational::InitialData initial,
+                   std::function<ExactState(double)> exact);
 
 // Closed forms in the shape Register's `exact` takes (lagrangians/
 // register.h). A scalar problem whose Exact(t) returns {x, v}:

@@ -153,7 +153,7 @@ BOOST_AUTO_TEST_CASE(SceneCheck_AcceptsEveryShippedScene) {
   int n = 0;
   for (const auto& e : fs::directory_iterator(VIVP_SCENES_DIR)) {
     const Run r = Vivp("scene check " + e.path().string());
-    // A build with fewer VIVP_SCENE_DOFS (the sanitizer build of .ci/run)
+    // A build with fewer VIVP_DIMS (the sanitizer build of .ci/run)
     // refuses the FPU chain's dof = 8 by name; nothing else may fail.
     if (r.status == 2 &&
         r.err.find("is not among the compiled sizes") != std::string::npos &&

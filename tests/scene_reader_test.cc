@@ -244,7 +244,7 @@ BOOST_AUTO_TEST_CASE(BadInput_VariationalKeyForAStepper) {
 }
 
 BOOST_AUTO_TEST_CASE(BadInput_DofNotCompiled) {
-  // The list is the build's VIVP_SCENE_DOFS (default 1, 2, 3, 8; the
+  // The list is the build's VIVP_DIMS (default 1, 2, 3, 8; the
   // sanitizer build of .ci/run compiles 1 and 2 only).
   std::string sizes;
   for (const int d : SupportedDofs())
@@ -253,7 +253,8 @@ BOOST_AUTO_TEST_CASE(BadInput_DofNotCompiled) {
              "bad.toml:2:7: dof = 5 is not among the compiled sizes; expected "
              "one of " +
                  sizes +
-                 " (add the size to VIVP_SCENE_DOFS in apps/CMakeLists.txt)");
+                 " (configure with the size added to VIVP_DIMS, e.g. cmake "
+                 "-DVIVP_DIMS=\"1;2;3;8;4\")");
 }
 
 BOOST_AUTO_TEST_CASE(BadInput_NoEquationOfMotion) {

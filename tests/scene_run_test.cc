@@ -259,7 +259,7 @@ BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
     if (entry.path().extension() != ".toml") continue;
     const std::string stem = entry.path().stem().string();
     BOOST_TEST_CONTEXT("scene " << stem) {
-      // A build may compile fewer sizes (VIVP_SCENE_DOFS; the sanitizer
+      // A build may compile fewer sizes (VIVP_DIMS; the sanitizer
       // build of .ci/run compiles 1 and 2): those scenes are refused by the
       // reader with the list, and counted as skipped.
       scene::Scene s;

@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 #include <concepts>
 #include <type_traits>
+#include <utility>
 
 #include "core/autodiff/pointwise.h"
 
@@ -49,6 +50,15 @@ constexpr int DeclaredOrder() {
   else
     return 0;
 }
+
+// A problem whose pointwise derivatives were compiled once, elsewhere
+// (erased_problem.h): every function below asks its model instead of
+// differentiating it, so the solvers compile once per dimension, not once per
+// Lagrangian.
+template <class P>
+concept Precompiled = requires(const P& p) {
+  p.pointwise();
+};
 
 // f = L(x1, v1) − L(x2, v2) + Λ(x1, v1, x2, v2): the density of eq. (34).
 template <class P, class T>
@@ -188,7 +198,9 @@ Diagonal<Real, P::kDim> DiagonalDerivatives(const P& problem, const Real* p) {
   constexpr int d = P::kDim;
   Diagonal<Real, d> out{DiagonalVector<Real, d>::Zero(),
                         Eigen::Matrix<Real, 2 * d, 2 * d>::Zero()};
-  if constexpr (DifferentiatesByTerms<P, Real>) {
+  if constexpr (Precompiled<P>) {
+    out = problem.pointwise().DiagonalDerivatives(p);
+  } else if constexpr (DifferentiatesByTerms<P, Real>) {
     problem.AddDiagonalDerivatives(p, out);
   } else {
     AddLagrangianTerm<Depends::kBoth, d>(problem, p, out);
@@ -205,7 +217,9 @@ DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
                                                const Real* p) {
   constexpr int d = P::kDim;
   DiagonalVector<Real, d> g = DiagonalVector<Real, d>::Zero();
-  if constexpr (DifferentiatesByTerms<P, Real>) {
+  if constexpr (Precompiled<P>) {
+    g = problem.pointwise().DiagonalGradient(p);
+  } else if constexpr (DifferentiatesByTerms<P, Real>) {
     problem.AddDiagonalGradient(p, g);
   } else {
     AddLagrangianTermGradient<Depends::kBoth, d>(problem, p, g);
@@ -216,8 +230,63 @@ DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
   return g;
 }
 
-// The Hessian of L in (x, v) at (x, v): ∂²L/∂x∂x top left, the mass matrix
-// ∂²L/∂v∂v bottom right.
+// L and its gradient at z = (x, v) (first-order AD).
+template <class Real, class P>
+std::pair<Real, Eigen::Matrix<Real, 2 * P::kDim, 1>> LagrangianGradient(
+    const P& problem, const Real* z) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>)
+    return problem.pointwise().LagrangianGradient(z);
+  else
+    return autodiff::Gradient<Real, 2 * d>(
+        [&](const auto* s) { return problem(s, s + d); }, z);
+}
+
+// L, its gradient and its Hessian at z = (x, v): ∂²L/∂x∂x top left, the mass
+// matrix ∂²L/∂v∂v bottom right.
+template <class Real, class P>
+autodiff::ValueGradientHessian<Real, 2 * P::kDim> LagrangianDerivatives(
+    const P& problem, const Real* z) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>)
+    return problem.pointwise().LagrangianDerivatives(z);
+  else
+    return autodiff::Hessian<Real, 2 * d>(
+        [&](const auto* s) { return problem(s, s + d); }, z);
+}
+
+// The density f at z = (x1, v1, x2, v2) and its gradient: the full system's
+// residual (full_system.h).
+template <class Real, class P>
+std::pair<Real, Eigen::Matrix<Real, 4 * P::kDim, 1>> DensityGradient(
+    const P& problem, const Real* z) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>)
+    return problem.pointwise().DensityGradient(z);
+  else
+    return autodiff::Gradient<Real, 4 * d>(
+        [&](const auto* y) {
+          return Density(problem, y, y + d, y + 2 * d, y + 3 * d);
+        },
+        z);
+}
+
+// The same with the Hessian: the full system's Jacobian.
+template <class Real, class P>
+autodiff::ValueGradientHessian<Real, 4 * P::kDim> DensityDerivatives(
+    const P& problem, const Real* z) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>)
+    return problem.pointwise().DensityDerivatives(z);
+  else
+    return autodiff::Hessian<Real, 4 * d>(
+        [&](const auto* y) {
+          return Density(problem, y, y + d, y + 2 * d, y + 3 * d);
+        },
+        z);
+}
+
+// The Hessian of L in (x, v) at (x, v) (see LagrangianDerivatives).
 template <class Real, class P>
 Eigen::Matrix<Real, 2 * P::kDim, 2 * P::kDim> LagrangianHessian(
     const P& problem, const Real* x, const Real* v) {
@@ -227,9 +296,7 @@ Eigen::Matrix<Real, 2 * P::kDim, 2 * P::kDim> LagrangianHessian(
     z[c] = x[c];
     z[d + c] = v[c];
   }
-  return autodiff::Hessian<Real, 2 * d>(
-             [&](const auto* s) { return problem(s, s + d); }, z)
-      .hessian;
+  return LagrangianDerivatives<Real>(problem, z).hessian;
 }
 
 // The mass matrix ∂²L/∂v∂v at (x, v).
@@ -247,30 +314,35 @@ Eigen::Matrix<Real, P::kDim, P::kDim> FirstOrderCoefficient(const P& problem,
                                                             const Real* x,
                                                             const Real* v) {
   constexpr int d = P::kDim;
-  Real p[2 * d], m[2 * d];
-  for (int c = 0; c < d; ++c) {
-    p[c] = x[c];
-    p[d + c] = v[c];
-    m[c] = m[d + c] = Real(0);
+  if constexpr (Precompiled<P>) {
+    return problem.pointwise().FirstOrderCoefficient(x, v);
+  } else {
+    Real p[2 * d], m[2 * d];
+    for (int c = 0; c < d; ++c) {
+      p[c] = x[c];
+      p[d + c] = v[c];
+      m[c] = m[d + c] = Real(0);
+    }
+    const auto mixed = autodiff::Mixed<Real, 2 * d, 2 * d>(
+        [&](const auto* pv, const auto* mv) {
+          return DensityPlusMinus(problem, pv, pv + d, mv, mv + d);
+        },
+        p, m);
+    return mixed.dmp.template block<d, d>(0, d);
   }
-  const auto mixed = autodiff::Mixed<Real, 2 * d, 2 * d>(
-      [&](const auto* pv, const auto* mv) {
-        return DensityPlusMinus(problem, pv, pv + d, mv, mv + d);
-      },
-      p, m);
-  return mixed.dmp.template block<d, d>(0, d);
 }
 
 // 2 for a second-order system (∂²L/∂v² ≠ 0 at the given point), 1 otherwise,
 // unless the problem declares kOrder.
 template <class Real, class P>
 int SystemOrder(const P& problem, const Real* x, const Real* v) {
-  if constexpr (DeclaredOrder<P>() != 0) {
+  if constexpr (Precompiled<P>) {
+    if (const int k = problem.pointwise().DeclaredOrder(); k != 0) return k;
+  } else if constexpr (DeclaredOrder<P>() != 0) {
     return DeclaredOrder<P>();
-  } else {
-    return MassMatrix<Real>(problem, x, v).cwiseAbs().maxCoeff() > Real(0) ? 2
-                                                                           : 1;
   }
+  return MassMatrix<Real>(problem, x, v).cwiseAbs().maxCoeff() > Real(0) ? 2
+                                                                         : 1;
 }
 
 }  // namespace vivp::action

@@ -63,12 +63,6 @@ class FullSystem : public SystemBase<P, Real> {
     }
   }
 
-  auto DensityOf() const {
-    return [this](const auto* z) {
-      return Density(problem_, z, z + d, z + 2 * d, z + 3 * d);
-    };
-  }
-
   Real Value(const Real* u) const {
     std::vector<Real> x[2][d], v[2][d];
     Paths(u, x, v);
@@ -77,7 +71,7 @@ class FullSystem : public SystemBase<P, Real> {
     for (int i = 0; i < n_; ++i) {
       Real z[4 * d];
       NodeValues(x, v, i, z);
-      s += D.NormWeight(i) * DensityOf()(z);
+      s += D.NormWeight(i) * DensityGradient<Real>(problem_, z).first;
     }
     for (int c = 0; c < d; ++c) {
       s += u[Lambda1(c)] * (x[0][c][0] - x_init_[c]);
@@ -103,7 +97,7 @@ class FullSystem : public SystemBase<P, Real> {
     for (int i = 0; i < n_; ++i) {
       Real z[4 * d];
       NodeValues(x, v, i, z);
-      const auto grad = autodiff::Gradient<Real, 4 * d>(DensityOf(), z).second;
+      const auto grad = DensityGradient<Real>(problem_, z).second;
       const Real h = D.NormWeight(i);
       for (int a = 0; a < 2; ++a)
         for (int c = 0; c < d; ++c) {
@@ -153,8 +147,7 @@ class FullSystem : public SystemBase<P, Real> {
       Real z[4 * d];
       NodeValues(x, v, i, z);
       const Eigen::Matrix<Real, 4 * d, 4 * d> hess =
-          D.NormWeight(i) *
-          autodiff::Hessian<Real, 4 * d>(DensityOf(), z).hessian;
+          D.NormWeight(i) * DensityDerivatives<Real>(problem_, z).hessian;
       const LocalMap<Real> map = MakeLocalMap(dbar_, i);
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b) {

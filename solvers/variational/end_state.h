@@ -30,8 +30,7 @@ Eigen::Matrix<Real, P::kDim, 1> VelocityOfMomentum(
   for (int c = 0; c < d; ++c) z[c] = x[c];
   for (int step = 0; step < 4; ++step) {
     for (int c = 0; c < d; ++c) z[d + c] = v[c];
-    const auto h = autodiff::Hessian<Real, 2 * d>(
-        [&](const auto* y) { return problem(y, y + d); }, z);
+    const auto h = action::LagrangianDerivatives<Real>(problem, z);
     const Eigen::Matrix<Real, d, 1> r = p - h.gradient.template tail<d>();
     const Real scale =
         std::max(p.cwiseAbs().maxCoeff(),

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/action/erased_problem.h"
 #include "core/action/euler_lagrange.h"
 
 namespace vivp::variational {
@@ -120,4 +121,12 @@ class OdeReference {
       stepper_;
 };
 
+}  // namespace vivp::variational
+
+// Compiled once per dimension in the library (precompiled_dim.cc.in).
+namespace vivp::variational {
+#define VIVP_EXTERN_REFERENCE(D) \
+  extern template class OdeReference<action::ErasedProblem<D>>;
+VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_REFERENCE)
+#undef VIVP_EXTERN_REFERENCE
 }  // namespace vivp::variational

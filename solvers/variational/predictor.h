@@ -110,9 +110,7 @@ class Predictor {
       z[c] = x[c];
       z[d + c] = v[c];
     }
-    const auto g = autodiff::Gradient<double, 2 * d>(
-                       [&](const auto* q) { return problem_(q, q + d); }, z)
-                       .second;
+    const auto g = action::LagrangianGradient<double>(problem_, z).second;
     std::array<double, d> p;
     for (int c = 0; c < d; ++c) p[c] = g[d + c];
     return p;

@@ -25,6 +25,7 @@
 
 #include <stdexcept>
 
+#include "core/action/erased_problem.h"
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march.h"
 #include "solvers/variational/solve_ivp.h"
@@ -68,4 +69,18 @@ MarchResult Solve(const P& problem, const InitialData& initial,
   return MarchIvp(problem, initial, grid, options, observer);
 }
 
+}  // namespace vivp::variational
+
+// Compiled once per dimension in the library (precompiled_dim.cc.in): a
+// solve of action::Erase(problem) does not compile the solvers again.
+namespace vivp::variational {
+#define VIVP_EXTERN_SOLVE(D)                                                 \
+  extern template IvpSolution<double> Solve(const action::ErasedProblem<D>&, \
+                                            const InitialData&, const Grid&, \
+                                            const SolveOptions&);            \
+  extern template MarchResult Solve(const action::ErasedProblem<D>&,         \
+                                    const InitialData&, const Grid&,         \
+                                    const MarchOptions&, const NodeObserver&);
+VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_SOLVE)
+#undef VIVP_EXTERN_SOLVE
 }  // namespace vivp::variational
