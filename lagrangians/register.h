@@ -20,6 +20,9 @@
 //
 // Registration runs during static initialization; the registries it fills
 // are function-local statics, so the order of the files does not matter.
+// What the file compiles is L's pointwise derivatives (action::Erase): the
+// solvers and the scene runner are compiled once per number of coordinates
+// in VIVP_DIMS, which L::kDim must be one of.
 #pragma once
 
 #include <functional>

@@ -5,6 +5,7 @@
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "problems/anharmonic.h"
 
@@ -215,5 +216,22 @@ std::unique_ptr<Reference> MakeClosedForm(const Scene& s) {
     return std::make_unique<KeplerReference>(s);
   return nullptr;
 }
+
+namespace detail {
+
+void LinearReference::State(double t, double* x, double* v) {
+  const Eigen::VectorXd y = (a_ * (t - t0_)).exp() * y0_;
+  for (int c = 0; c < d_; ++c) x[c] = y[c];
+  if (a_.rows() == 2 * d_ + 1)
+    for (int c = 0; c < d_; ++c) v[c] = y[d_ + c];
+  else
+    for (int c = 0; c < d_; ++c) v[c] = (a_.row(c) * y)(0);
+}
+
+std::string LinearReference::description() const {
+  return "exact: matrix exponential of the linear equation of motion";
+}
+
+}  // namespace detail
 
 }  // namespace vivp::scene

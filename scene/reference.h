@@ -15,7 +15,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <unsupported/Eigen/MatrixFunctions>
+#include <utility>
 #include <vector>
 
 #include "core/action/euler_lagrange.h"
@@ -43,59 +43,57 @@ std::unique_ptr<Reference> MakeClosedForm(const Scene& scene);
 namespace detail {
 
 // y = (x, ẋ, 1) (first order: (x, 1)) obeys ẏ = A y for a linear problem:
+// y(t) = exp(A (t − t0)) y(t0), the matrix exponential compiled once
+// (reference.cc) for every size.
+class LinearReference : public Reference {
+ public:
+  LinearReference(Eigen::MatrixXd a, Eigen::VectorXd y0, double t0, int d)
+      : a_(std::move(a)), y0_(std::move(y0)), t0_(t0), d_(d) {}
+  void State(double t, double* x, double* v) override;
+  std::string description() const override;
+
+ private:
+  Eigen::MatrixXd a_;
+  Eigen::VectorXd y0_;
+  double t0_;
+  int d_;
+};
+
 // A is read off the Euler–Lagrange equation at the origin, where the
 // derivatives of an affine equation are exact.
 template <class P>
-class LinearReference : public Reference {
- public:
-  static constexpr int d = P::kDim;
-  LinearReference(const P& problem, const Scene& s) : t0_(s.t_start) {
-    const int n = s.order * d + 1;
-    a_ = Eigen::MatrixXd::Zero(n, n);
-    y0_ = Eigen::VectorXd::Zero(n);
-    const double zero[2 * d] = {};
-    const auto g = action::DiagonalDerivatives<double>(problem, zero);
-    const Eigen::Matrix<double, d, d> gxx = g.dmp.template block<d, d>(0, 0);
-    const Eigen::Matrix<double, d, d> gxv = g.dmp.template block<d, d>(0, d);
-    const Eigen::Matrix<double, d, d> gvx = g.dmp.template block<d, d>(d, 0);
-    const Eigen::Matrix<double, d, d> gvv = g.dmp.template block<d, d>(d, d);
-    const Eigen::Matrix<double, d, 1> g0 = g.dm.template head<d>();
-    if (s.order == 2) {
-      // ẍ = G_vv⁻¹(g0 + G_xx x + (G_xv − G_vx) ẋ)
-      const auto lu = gvv.partialPivLu();
-      a_.block(0, d, d, d).setIdentity();
-      a_.block(d, 0, d, d) = lu.solve(gxx);
-      a_.block(d, d, d, d) = lu.solve(gxv - gvx);
-      a_.block(d, 2 * d, d, 1) = lu.solve(g0);
-      for (int c = 0; c < d; ++c) y0_[d + c] = s.v0[c];
-    } else {
-      // 0 = g0 + G_xx x + (G_xv − G_vx) ẋ
-      const auto lu = (gxv - gvx).partialPivLu();
-      a_.block(0, 0, d, d) = -lu.solve(gxx);
-      a_.block(0, d, d, 1) = -lu.solve(g0);
-    }
-    for (int c = 0; c < d; ++c) y0_[c] = s.x0[c];
-    y0_[n - 1] = 1;
+std::unique_ptr<Reference> MakeLinearReference(const P& problem,
+                                               const Scene& s) {
+  constexpr int d = P::kDim;
+  const int n = s.order * d + 1;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd y0 = Eigen::VectorXd::Zero(n);
+  const double zero[2 * d] = {};
+  const auto g = action::DiagonalDerivatives<double>(problem, zero);
+  const Eigen::Matrix<double, d, d> gxx = g.dmp.template block<d, d>(0, 0);
+  const Eigen::Matrix<double, d, d> gxv = g.dmp.template block<d, d>(0, d);
+  const Eigen::Matrix<double, d, d> gvx = g.dmp.template block<d, d>(d, 0);
+  const Eigen::Matrix<double, d, d> gvv = g.dmp.template block<d, d>(d, d);
+  const Eigen::Matrix<double, d, 1> g0 = g.dm.template head<d>();
+  if (s.order == 2) {
+    // ẍ = G_vv⁻¹(g0 + G_xx x + (G_xv − G_vx) ẋ)
+    const auto lu = gvv.partialPivLu();
+    a.block(0, d, d, d).setIdentity();
+    a.block(d, 0, d, d) = lu.solve(gxx);
+    a.block(d, d, d, d) = lu.solve(gxv - gvx);
+    a.block(d, 2 * d, d, 1) = lu.solve(g0);
+    for (int c = 0; c < d; ++c) y0[d + c] = s.v0[c];
+  } else {
+    // 0 = g0 + G_xx x + (G_xv − G_vx) ẋ
+    const auto lu = (gxv - gvx).partialPivLu();
+    a.block(0, 0, d, d) = -lu.solve(gxx);
+    a.block(0, d, d, 1) = -lu.solve(g0);
   }
-
-  void State(double t, double* x, double* v) override {
-    const Eigen::VectorXd y = (a_ * (t - t0_)).exp() * y0_;
-    for (int c = 0; c < d; ++c) x[c] = y[c];
-    if (a_.rows() == 2 * d + 1)
-      for (int c = 0; c < d; ++c) v[c] = y[d + c];
-    else
-      for (int c = 0; c < d; ++c) v[c] = (a_.row(c) * y)(0);
-  }
-
-  std::string description() const override {
-    return "exact: matrix exponential of the linear equation of motion";
-  }
-
- private:
-  double t0_;
-  Eigen::MatrixXd a_;
-  Eigen::VectorXd y0_;
-};
+  for (int c = 0; c < d; ++c) y0[c] = s.x0[c];
+  y0[n - 1] = 1;
+  return std::make_unique<LinearReference>(std::move(a), std::move(y0),
+                                           s.t_start, d);
+}
 
 // The Euler–Lagrange reference of solvers/variational/ode_reference.h
 // behind the scene's Reference interface.
@@ -131,8 +129,7 @@ std::unique_ptr<Reference> MakeReference(const P& problem, const Scene& s) {
   if (s.output.reference == "ode")
     return std::make_unique<detail::OdeReference<P>>(problem, s);
   if (s.output.reference == "exact") {
-    if (LinearScene(s))
-      return std::make_unique<detail::LinearReference<P>>(problem, s);
+    if (LinearScene(s)) return detail::MakeLinearReference(problem, s);
     return MakeClosedForm(s);
   }
   return nullptr;
