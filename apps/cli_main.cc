@@ -1,0 +1,61 @@
+// The command line: its commands (command.h) and their exit status.
+//
+// Exit status: 0 success, 1 failure while running, 2 bad input (one line on
+// stderr naming the problem and what would fix it).
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/command.h"
+#include "scene/scene.h"
+
+namespace vivp::apps {
+
+int Main(int argc, char** argv) {
+  CLI::App app{
+      "vivp: structure-preserving time integration from the action "
+      "(summation-by-parts variational IVP solver)"};
+  app.require_subcommand(1);
+  const std::vector<std::pair<std::string, vivp::apps::Runner>> commands = {
+      {"spectrum", vivp::apps::AddSpectrumCommand(app)},
+      {"converge", vivp::apps::AddConvergeCommand(app)},
+      {"bea", vivp::apps::AddBeaCommand(app)},
+      {"bench", vivp::apps::AddBenchCommand(app)},
+      {"run", vivp::apps::AddRunCommand(app)},
+      {"scene", vivp::apps::AddSceneCommand(app)},
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "vivp: error: " << e.what() << " (see 'vivp --help')\n";
+    return 2;
+  }
+  try {
+    for (const auto& [name, run] : commands)
+      if (app.got_subcommand(name)) return run();
+  } catch (const vivp::scene::SceneError& e) {
+    // Already FILE:LINE:COL: what is wrong; what is expected.
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const vivp::apps::UsageError& e) {
+    std::cerr << "vivp: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "vivp: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "vivp: failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace vivp::apps
