@@ -2,7 +2,7 @@
 // steppers on its Legendre form (legendre.h), the variational solver on the
 // Lagrangian itself, measured against the registry's closed form or
 // reference at t_end. The stepper templates are compiled once per
-// (d, separable) in bench_lagrangian.cc for d = 1, 2, 3.
+// (d, separable) for d = 1, 2, 3 (bench_lagrangian_impl.h).
 #pragma once
 
 #include <string>
@@ -21,15 +21,17 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
                                     ErasedHamiltonian<d, Separable> h,
                                     double t_end);
 
-// The (d, separable) shapes compiled, as an X-macro so that the declarations
-// here and the instantiations in bench_lagrangian.cc name the same list.
-#define VIVP_BENCH_LAGRANGIAN_SHAPES(X) \
-  X(1, true) X(1, false) X(2, true) X(2, false) X(3, true) X(3, false)
+// The numbers of coordinates compiled, each with both separable forms in a
+// translation unit of its own (generated from bench_lagrangian_dim.cc.in by
+// studies/CMakeLists.txt, whose list of d must match this one).
+#define VIVP_BENCH_LAGRANGIAN_DIMS(X) X(1) X(2) X(3)
 
-#define VIVP_BENCH_LAGRANGIAN_EXTERN(d, s)                   \
-  extern template BenchProblem LagrangianBenchProblem<d, s>( \
-      const std::string&, ErasedHamiltonian<d, s>, double);
-VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_EXTERN)
+#define VIVP_BENCH_LAGRANGIAN_EXTERN(d)                          \
+  extern template BenchProblem LagrangianBenchProblem<d, true>(  \
+      const std::string&, ErasedHamiltonian<d, true>, double);   \
+  extern template BenchProblem LagrangianBenchProblem<d, false>( \
+      const std::string&, ErasedHamiltonian<d, false>, double);
+VIVP_BENCH_LAGRANGIAN_DIMS(VIVP_BENCH_LAGRANGIAN_EXTERN)
 #undef VIVP_BENCH_LAGRANGIAN_EXTERN
 
 }  // namespace vivp::studies

@@ -2,11 +2,13 @@
 // methods, invariants and the measurement of one configuration, the
 // reference computed on first use and kept. Instantiates the stepper
 // templates for the type: include it only where a problem type is made into
-// a bench problem once (bench_problems.cc, bench_lagrangian.cc).
+// a bench problem once (bench_oscillators.cc, bench_orbits.cc,
+// bench_nldnls.cc, bench_lagrangian_impl.h).
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,22 @@ BenchProblem MakeBenchProblem(std::string name, std::string description,
                    *cache, t_end, knob, repeats);
   };
   return b;
+}
+
+// Gauss–Legendre s = 3 with n steps: the reference for problems without a
+// closed form.
+template <class Problem>
+std::vector<double> GaussReference(const Problem& problem, double t_end,
+                                   long n) {
+  using System = steppers::HamiltonianSystem<Problem>;
+  const System system(problem);
+  steppers::RungeKutta<Problem> stepper(system, steppers::Gauss3());
+  const auto init = problems::InitialState(problem);
+  typename System::Vector y = System::Vector::Map(init.data());
+  const steppers::RunReport r = Integrate(stepper, y, t_end / n, n);
+  if (r.status != steppers::Status::kOk)
+    throw std::runtime_error("reference run failed: " + ToString(r.status));
+  return std::vector<double>(y.data(), y.data() + y.size());
 }
 
 }  // namespace vivp::studies::detail

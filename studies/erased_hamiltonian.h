@@ -1,7 +1,7 @@
 // A Hamiltonian of d degrees of freedom behind function objects (value,
 // gradient, Hessian; SuppliesDerivatives in hamiltonian_system.h), so that
 // the stepper templates are compiled once per (d, separable) for every
-// registered Lagrangian (bench_lagrangian.cc) and a registration compiles
+// registered Lagrangian (bench_lagrangian_impl.h) and a registration compiles
 // only its own H. `Of` builds one from a Lagrangian's Legendre form
 // (legendre.h), differentiated pointwise (core/autodiff/pointwise.h) like
 // the action.

@@ -30,6 +30,9 @@ double ZeroTolerance(const Eigen::MatrixXd& a);
 
 ZeroEigenvalueStructure AnalyzeZeroEigenvalue(const Eigen::MatrixXd& a);
 
+// The eigenvalues of A (EigenSolver), sorted by |.|, then arg.
+std::vector<std::complex<double>> SortedEigenvalues(const Eigen::MatrixXd& a);
+
 struct Spectrum {
   std::vector<std::complex<double>> eigenvalues;  // sorted by |.|, then arg
   Eigen::VectorXd singular_values;                // descending

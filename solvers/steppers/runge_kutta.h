@@ -15,6 +15,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/linalg/dense_lu.h"
 #include "solvers/steppers/hamiltonian_system.h"
 #include "solvers/steppers/step_result.h"
 #include "solvers/steppers/tableau.h"
@@ -98,7 +99,7 @@ class RungeKutta {
       for (int i = 0; i < s; ++i) f.col(i) = system_.Field(y + z.col(i));
       const Eigen::MatrixXd g = z - h * f * tableau_.a.transpose();
       const Eigen::VectorXd dz =
-          lu_->solve(-Eigen::Map<const Eigen::VectorXd>(g.data(), s * kN));
+          lu_->Solve(-Eigen::Map<const Eigen::VectorXd>(g.data(), s * kN));
       if (!dz.allFinite()) {
         report.status = Status::kNewtonFailed;
         return report;
@@ -152,7 +153,7 @@ class RungeKutta {
   NewtonOptions options_;
   Eigen::MatrixXd k_;
   std::optional<typename System::Matrix> df_;
-  std::optional<Eigen::PartialPivLU<Eigen::MatrixXd>> lu_;
+  std::optional<linalg::DenseLu> lu_;
   double lu_h_ = 0;
   bool refresh_ = false;
 };

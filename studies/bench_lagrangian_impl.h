@@ -1,9 +1,12 @@
-// The stepper templates for registered Lagrangians, compiled once per
-// (d, separable) (bench_lagrangian.h).
-#include "studies/bench_lagrangian.h"
+// The definition of LagrangianBenchProblem (bench_lagrangian.h), included
+// only by the translation units generated from bench_lagrangian_dim.cc.in:
+// one per d, so that the stepper templates for the three sizes compile in
+// parallel.
+#pragma once
 
 #include <sstream>
 
+#include "studies/bench_lagrangian.h"
 #include "studies/bench_problem_of.h"
 #include "studies/registry.h"
 
@@ -26,11 +29,5 @@ BenchProblem LagrangianBenchProblem(const std::string& name,
   return detail::MakeBenchProblem(name, description.str(), std::move(h), t_end,
                                   64, p.reference, reference);
 }
-
-#define VIVP_BENCH_LAGRANGIAN_INSTANCE(d, s)          \
-  template BenchProblem LagrangianBenchProblem<d, s>( \
-      const std::string&, ErasedHamiltonian<d, s>, double);
-VIVP_BENCH_LAGRANGIAN_SHAPES(VIVP_BENCH_LAGRANGIAN_INSTANCE)
-#undef VIVP_BENCH_LAGRANGIAN_INSTANCE
 
 }  // namespace vivp::studies
