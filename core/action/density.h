@@ -230,6 +230,35 @@ DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
   return g;
 }
 
+// DiagonalGradient at n points, p[k·2d …] ↦ out[k·2d …], and
+// DiagonalDerivatives at n points into out[k]: the solve loops' sweeps over
+// the nodes. A precompiled problem makes one call for all n (one virtual
+// call per sweep, not per node); the numbers are those of the single-point
+// functions.
+template <class Real, class P>
+void DiagonalGradients(const P& problem, const Real* p, int n, Real* out) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>) {
+    problem.pointwise().DiagonalGradients(p, n, out);
+  } else {
+    for (int k = 0; k < n; ++k)
+      Eigen::Map<DiagonalVector<Real, d>>(out + 2 * d * k) =
+          DiagonalGradient<Real>(problem, p + 2 * d * k);
+  }
+}
+
+template <class Real, class P>
+void DiagonalDerivativesAt(const P& problem, const Real* p, int n,
+                           Diagonal<Real, P::kDim>* out) {
+  constexpr int d = P::kDim;
+  if constexpr (Precompiled<P>) {
+    problem.pointwise().DiagonalDerivativesAt(p, n, out);
+  } else {
+    for (int k = 0; k < n; ++k)
+      out[k] = DiagonalDerivatives<Real>(problem, p + 2 * d * k);
+  }
+}
+
 // L and its gradient at z = (x, v) (first-order AD).
 template <class Real, class P>
 std::pair<Real, Eigen::Matrix<Real, 2 * P::kDim, 1>> LagrangianGradient(

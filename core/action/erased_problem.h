@@ -64,6 +64,13 @@ class PointwiseModel {
   // The residual evaluated again in extended precision (ivp_types.h).
   virtual DiagonalVector<long double, d> DiagonalGradient(
       const long double* p) const = 0;
+  // Their batched forms (density.h: DiagonalGradients,
+  // DiagonalDerivativesAt), one call per sweep over the nodes.
+  virtual void DiagonalGradients(const double* p, int n, double* out) const = 0;
+  virtual void DiagonalGradients(const long double* p, int n,
+                                 long double* out) const = 0;
+  virtual void DiagonalDerivativesAt(const double* p, int n,
+                                     Diagonal<double, d>* out) const = 0;
   virtual std::pair<double, Vector4> DensityGradient(const double* z) const = 0;
   virtual autodiff::ValueGradientHessian<double, 4 * d> DensityDerivatives(
       const double* z) const = 0;
@@ -102,6 +109,17 @@ class ModelOf final : public PointwiseModel<P::kDim> {
   DiagonalVector<long double, d> DiagonalGradient(
       const long double* p) const override {
     return action::DiagonalGradient<long double>(problem_, p);
+  }
+  void DiagonalGradients(const double* p, int n, double* out) const override {
+    action::DiagonalGradients<double>(problem_, p, n, out);
+  }
+  void DiagonalGradients(const long double* p, int n,
+                         long double* out) const override {
+    action::DiagonalGradients<long double>(problem_, p, n, out);
+  }
+  void DiagonalDerivativesAt(const double* p, int n,
+                             Diagonal<double, d>* out) const override {
+    action::DiagonalDerivativesAt<double>(problem_, p, n, out);
   }
   std::pair<double, typename Base::Vector4> DensityGradient(
       const double* z) const override {
@@ -180,6 +198,19 @@ class SumModel final : public PointwiseModel<d> {
       const long double* p) const override {
     return a_->DiagonalGradient(p) + b_->DiagonalGradient(p);
   }
+  // The batched forms as the single-point ones, point by point (the sum
+  // is not on the fast path: a scene's registered L with built-in effects).
+  void DiagonalGradients(const double* p, int n, double* out) const override {
+    Each(p, n, out, [&](const double* q) { return DiagonalGradient(q); });
+  }
+  void DiagonalGradients(const long double* p, int n,
+                         long double* out) const override {
+    Each(p, n, out, [&](const long double* q) { return DiagonalGradient(q); });
+  }
+  void DiagonalDerivativesAt(const double* p, int n,
+                             Diagonal<double, d>* out) const override {
+    for (int k = 0; k < n; ++k) out[k] = DiagonalDerivatives(p + 2 * d * k);
+  }
   std::pair<double, typename Base::Vector4> DensityGradient(
       const double* z) const override {
     return Add(a_->DensityGradient(z), b_->DensityGradient(z));
@@ -194,6 +225,12 @@ class SumModel final : public PointwiseModel<d> {
   }
 
  private:
+  template <class Real, class F>
+  static void Each(const Real* p, int n, Real* out, F gradient) {
+    for (int k = 0; k < n; ++k)
+      Eigen::Map<DiagonalVector<Real, d>>(out + 2 * d * k) =
+          gradient(p + 2 * d * k);
+  }
   template <class V>
   static std::pair<double, V> Add(const std::pair<double, V>& a,
                                   const std::pair<double, V>& b) {

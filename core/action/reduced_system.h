@@ -17,6 +17,7 @@
 // conditioning amplifies (docs/method.md §6).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -78,14 +79,24 @@ class ReducedSystem : public SystemBase<P, Real> {
     Paths(y, x, v);
     const auto& D = dbar_.base();
     for (int c = 0; c < d; ++c) w[c].assign(n_, Real(0));
-    for (int i = 0; i < n_; ++i) {
-      Real p[2 * d];
-      NodePoint(x, v, i, p);
-      const auto g = DiagonalGradient<Real>(problem_, p);
-      const Real h = D.NormWeight(i);
-      for (int c = 0; c < d; ++c) {
-        f[NodeRow(i, c)] = h * g[c];
-        w[c][i] = g[d + c];  // the momentum-like ∂f/∂v₋ at node i
+    // The pointwise gradients a block of nodes at a time (density.h).
+    auto& points = scratch_.points;
+    auto& grads = scratch_.grads;
+    points.resize(2 * d * kBlock);
+    grads.resize(2 * d * kBlock);
+    for (int begin = 0; begin < n_; begin += kBlock) {
+      const int end = std::min(n_, begin + kBlock);
+      for (int i = begin; i < end; ++i)
+        NodePoint(x, v, i, &points[2 * d * (i - begin)]);
+      DiagonalGradients<Real>(problem_, points.data(), end - begin,
+                              grads.data());
+      for (int i = begin; i < end; ++i) {
+        const Real* g = &grads[2 * d * (i - begin)];
+        const Real h = D.NormWeight(i);
+        for (int c = 0; c < d; ++c) {
+          f[NodeRow(i, c)] = h * g[c];
+          w[c][i] = g[d + c];  // the momentum-like ∂f/∂v₋ at node i
+        }
       }
     }
     auto& dw = scratch_.dtw;
@@ -123,10 +134,20 @@ class ReducedSystem : public SystemBase<P, Real> {
     auto& v = scratch_.v;
     Paths(y, x, v);
     const auto& D = dbar_.base();
+    // The pointwise derivatives a block of nodes at a time (density.h).
+    auto& points = scratch_.points;
+    auto& derivatives = scratch_.derivatives;
+    points.resize(2 * d * kBlock);
+    derivatives.resize(kBlock);
     for (int i = node_begin; i < node_end; ++i) {
-      Real p[2 * d];
-      NodePoint(x, v, i, p);
-      const auto mixed = DiagonalDerivatives<Real>(problem_, p);
+      if ((i - node_begin) % kBlock == 0) {
+        const int end = std::min(node_end, i + kBlock);
+        for (int k = i; k < end; ++k)
+          NodePoint(x, v, k, &points[2 * d * (k - i)]);
+        DiagonalDerivativesAt<Real>(problem_, points.data(), end - i,
+                                    derivatives.data());
+      }
+      const auto& mixed = derivatives[(i - node_begin) % kBlock];
       // Rows: (x₋, v₋) of node i; columns: (x₊, v₊). Both map to path
       // values through the same local map, since v± = D̄x± (linear part).
       const Eigen::Matrix<Real, 2 * d, 2 * d> a = D.NormWeight(i) * mixed.dmp;
@@ -162,11 +183,19 @@ class ReducedSystem : public SystemBase<P, Real> {
   }
 
  private:
+  // Nodes per call of the pointwise derivatives: one call (a virtual one
+  // for a precompiled problem) per block, and a block's points and
+  // derivatives stay in cache (whole sweeps at once were 8 % slower at
+  // Nt = 2^20 than node by node).
+  static constexpr int kBlock = 128;
+
   // Work arrays reused across evaluations: at Nt = 2^20 fresh allocations
   // cost more in page faults than the stencil work. (Not thread-safe: one
   // system per thread.)
   struct Scratch {
     std::vector<Real> x[d], v[d], w[d], dtw;
+    std::vector<Real> points, grads;  // 2d per node
+    std::vector<Diagonal<Real, d>> derivatives;
   };
   mutable Scratch scratch_;
 };
