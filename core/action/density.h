@@ -74,15 +74,11 @@ T Density(const P& problem, const T* x1, const T* v1, const T* x2,
 template <class P, class T>
 T DensityPlusMinus(const P& problem, const T* xp, const T* vp, const T* xm,
                    const T* vm) {
-  constexpr int d = P::kDim;
-  T x1[d], v1[d], x2[d], v2[d];
-  for (int c = 0; c < d; ++c) {
-    x1[c] = xp[c] + T(0.5) * xm[c];
-    x2[c] = xp[c] - T(0.5) * xm[c];
-    v1[c] = vp[c] + T(0.5) * vm[c];
-    v2[c] = vp[c] - T(0.5) * vm[c];
-  }
-  return Density(problem, x1, v1, x2, v2);
+  return LambdaTermPlusMinus<P::kDim>(
+      [&](const T* x1, const T* v1, const T* x2, const T* v2) {
+        return Density(problem, x1, v1, x2, v2);
+      },
+      xp, vp, xm, vm);
 }
 
 // A problem may differentiate itself term by term (problems/composed.h) by

@@ -71,6 +71,8 @@ class FullSystem : public SystemBase<P, Real> {
     for (int i = 0; i < n_; ++i) {
       Real z[4 * d];
       NodeValues(x, v, i, z);
+      // The value part of the AD is f itself (a precompiled problem offers
+      // no plain f(z) with Λ); only the tests' finite differences call this.
       s += D.NormWeight(i) * DensityGradient<Real>(problem_, z).first;
     }
     for (int c = 0; c < d; ++c) {
