@@ -131,23 +131,10 @@ DiagonalVector<Real, P::kDim> DiagonalGradient(const P& problem,
   return g;
 }
 
-// DiagonalGradient at n points, p[k·2d …] ↦ out[k·2d …], and
-// DiagonalDerivatives at n points into out[k]: the solve loops' sweeps over
-// the nodes. A precompiled problem makes one call for all n (one virtual
-// call per sweep, not per node); the numbers are those of the single-point
-// functions.
-template <class Real, class P>
-void DiagonalGradients(const P& problem, const Real* p, int n, Real* out) {
-  constexpr int d = P::kDim;
-  if constexpr (Precompiled<P>) {
-    problem.pointwise().DiagonalGradients(p, n, out);
-  } else {
-    for (int k = 0; k < n; ++k)
-      Eigen::Map<DiagonalVector<Real, d>>(out + 2 * d * k) =
-          DiagonalGradient<Real>(problem, p + 2 * d * k);
-  }
-}
-
+// DiagonalDerivatives at n points, p[k·2d …] ↦ out[k]: the Jacobian's
+// sweep over the nodes. A precompiled problem makes one call for all n (one
+// virtual call per block, not per node); the numbers are those of the
+// single-point function. (The residual's sweep: gradient_sweep.h.)
 template <class Real, class P>
 void DiagonalDerivativesAt(const P& problem, const Real* p, int n,
                            Diagonal<Real, P::kDim>* out) {

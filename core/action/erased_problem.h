@@ -25,6 +25,8 @@
 #include <utility>
 
 #include "core/action/density.h"
+#include "core/action/euler_lagrange.h"
+#include "core/action/gradient_sweep.h"
 // VIVP_PRECOMPILED_DIMS(X): the dimensions for which the solvers, marches
 // and scene runners are compiled into the libraries (explicit
 // instantiations; extern templates in their headers). A problem of another
@@ -64,11 +66,13 @@ class PointwiseModel {
   // The residual evaluated again in extended precision (ivp_types.h).
   virtual DiagonalVector<long double, d> DiagonalGradient(
       const long double* p) const = 0;
-  // Their batched forms (density.h: DiagonalGradients,
-  // DiagonalDerivativesAt), one call per sweep over the nodes.
-  virtual void DiagonalGradients(const double* p, int n, double* out) const = 0;
-  virtual void DiagonalGradients(const long double* p, int n,
-                                 long double* out) const = 0;
+  // The residual's sweep over the nodes (gradient_sweep.h) and the
+  // Jacobian's derivatives at n points (density.h: DiagonalDerivativesAt):
+  // one call per sweep or block, not per node.
+  virtual void SweepDiagonalGradient(
+      const GradientSweep<double, d>& s) const = 0;
+  virtual void SweepDiagonalGradient(
+      const GradientSweep<long double, d>& s) const = 0;
   virtual void DiagonalDerivativesAt(const double* p, int n,
                                      Diagonal<double, d>* out) const = 0;
   virtual std::pair<double, Vector4> DensityGradient(const double* z) const = 0;
@@ -76,6 +80,9 @@ class PointwiseModel {
       const double* z) const = 0;
   virtual Matrix FirstOrderCoefficient(const double* x,
                                        const double* v) const = 0;
+  // ẍ(x, ẋ) of a second-order problem (euler_lagrange.h).
+  virtual Eigen::Matrix<double, d, 1> Acceleration(const double* x,
+                                                   const double* v) const = 0;
 };
 
 // The model of one problem type: each function differentiates P as
@@ -110,12 +117,12 @@ class ModelOf final : public PointwiseModel<P::kDim> {
       const long double* p) const override {
     return action::DiagonalGradient<long double>(problem_, p);
   }
-  void DiagonalGradients(const double* p, int n, double* out) const override {
-    action::DiagonalGradients<double>(problem_, p, n, out);
+  void SweepDiagonalGradient(const GradientSweep<double, d>& s) const override {
+    action::SweepDiagonalGradient<double>(problem_, s);
   }
-  void DiagonalGradients(const long double* p, int n,
-                         long double* out) const override {
-    action::DiagonalGradients<long double>(problem_, p, n, out);
+  void SweepDiagonalGradient(
+      const GradientSweep<long double, d>& s) const override {
+    action::SweepDiagonalGradient<long double>(problem_, s);
   }
   void DiagonalDerivativesAt(const double* p, int n,
                              Diagonal<double, d>* out) const override {
@@ -132,6 +139,10 @@ class ModelOf final : public PointwiseModel<P::kDim> {
   typename Base::Matrix FirstOrderCoefficient(const double* x,
                                               const double* v) const override {
     return action::FirstOrderCoefficient<double>(problem_, x, v);
+  }
+  Eigen::Matrix<double, d, 1> Acceleration(const double* x,
+                                           const double* v) const override {
+    return action::Acceleration(problem_, x, v);
   }
 
   const P& problem() const { return problem_; }
@@ -198,14 +209,14 @@ class SumModel final : public PointwiseModel<d> {
       const long double* p) const override {
     return a_->DiagonalGradient(p) + b_->DiagonalGradient(p);
   }
-  // The batched forms as the single-point ones, point by point (the sum
-  // is not on the fast path: a scene's registered L with built-in effects).
-  void DiagonalGradients(const double* p, int n, double* out) const override {
-    Each(p, n, out, [&](const double* q) { return DiagonalGradient(q); });
+  // The sweeps as the single-point sums, point by point (the sum is not
+  // on the fast path: a scene's registered L with built-in effects).
+  void SweepDiagonalGradient(const GradientSweep<double, d>& s) const override {
+    SweepPoints(s, [&](const double* q) { return DiagonalGradient(q); });
   }
-  void DiagonalGradients(const long double* p, int n,
-                         long double* out) const override {
-    Each(p, n, out, [&](const long double* q) { return DiagonalGradient(q); });
+  void SweepDiagonalGradient(
+      const GradientSweep<long double, d>& s) const override {
+    SweepPoints(s, [&](const long double* q) { return DiagonalGradient(q); });
   }
   void DiagonalDerivativesAt(const double* p, int n,
                              Diagonal<double, d>* out) const override {
@@ -223,14 +234,18 @@ class SumModel final : public PointwiseModel<d> {
                                               const double* v) const override {
     return a_->FirstOrderCoefficient(x, v) + b_->FirstOrderCoefficient(x, v);
   }
+  // Not the sum of the parts' accelerations: ẍ solves the summed equations.
+  Eigen::Matrix<double, d, 1> Acceleration(const double* x,
+                                           const double* v) const override {
+    double p[2 * d];
+    for (int c = 0; c < d; ++c) {
+      p[c] = x[c];
+      p[d + c] = v[c];
+    }
+    return AccelerationFrom<d>(DiagonalDerivatives(p), v);
+  }
 
  private:
-  template <class Real, class F>
-  static void Each(const Real* p, int n, Real* out, F gradient) {
-    for (int k = 0; k < n; ++k)
-      Eigen::Map<DiagonalVector<Real, d>>(out + 2 * d * k) =
-          gradient(p + 2 * d * k);
-  }
   template <class V>
   static std::pair<double, V> Add(const std::pair<double, V>& a,
                                   const std::pair<double, V>& b) {

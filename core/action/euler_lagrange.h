@@ -23,21 +23,33 @@ namespace vivp::action {
 template <class P>
 using StateVector = Eigen::Matrix<double, P::kDim, 1>;
 
-// ẍ at (x, ẋ) of a second-order problem.
+// ẍ at (x, ẋ) from the diagonal derivatives g at p = (x, ẋ).
+template <int d>
+Eigen::Matrix<double, d, 1> AccelerationFrom(const Diagonal<double, d>& g,
+                                             const double* v) {
+  const Eigen::Map<const Eigen::Matrix<double, d, 1>> vel(v);
+  const Eigen::Matrix<double, d, 1> rhs =
+      g.dm.template head<d>() - g.dmp.template block<d, d>(d, 0) * vel;
+  return g.dmp.template block<d, d>(d, d).partialPivLu().solve(rhs);
+}
+
+// ẍ at (x, ẋ) of a second-order problem. (A precompiled problem evaluates
+// it in its model, where P is known: the predictor calls it at every step
+// and uses only part of the Hessian.)
 template <class P>
 StateVector<P> Acceleration(const P& problem, const double* x,
                             const double* v) {
   constexpr int d = P::kDim;
-  double p[2 * d];
-  for (int c = 0; c < d; ++c) {
-    p[c] = x[c];
-    p[d + c] = v[c];
+  if constexpr (Precompiled<P>) {
+    return problem.pointwise().Acceleration(x, v);
+  } else {
+    double p[2 * d];
+    for (int c = 0; c < d; ++c) {
+      p[c] = x[c];
+      p[d + c] = v[c];
+    }
+    return AccelerationFrom<d>(DiagonalDerivatives<double>(problem, p), v);
   }
-  const auto g = DiagonalDerivatives<double>(problem, p);
-  const Eigen::Map<const StateVector<P>> vel(v);
-  const StateVector<P> rhs =
-      g.dm.template head<d>() - g.dmp.template block<d, d>(d, 0) * vel;
-  return g.dmp.template block<d, d>(d, d).partialPivLu().solve(rhs);
 }
 
 // ẋ at x of a first-order problem: Newton on F(ẋ) = g_x − G_vx ẋ from

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/action/density.h"
+#include "core/action/gradient_sweep.h"
 #include "core/action/local_map.h"
 #include "core/action/system_base.h"
 #include "core/linalg/banded.h"
@@ -78,27 +79,19 @@ class ReducedSystem : public SystemBase<P, Real> {
     auto& w = scratch_.w;
     Paths(y, x, v);
     const auto& D = dbar_.base();
-    for (int c = 0; c < d; ++c) w[c].assign(n_, Real(0));
-    // The pointwise gradients a block of nodes at a time (density.h).
-    auto& points = scratch_.points;
-    auto& grads = scratch_.grads;
-    points.resize(2 * d * kBlock);
-    grads.resize(2 * d * kBlock);
-    for (int begin = 0; begin < n_; begin += kBlock) {
-      const int end = std::min(n_, begin + kBlock);
-      for (int i = begin; i < end; ++i)
-        NodePoint(x, v, i, &points[2 * d * (i - begin)]);
-      DiagonalGradients<Real>(problem_, points.data(), end - begin,
-                              grads.data());
-      for (int i = begin; i < end; ++i) {
-        const Real* g = &grads[2 * d * (i - begin)];
-        const Real h = D.NormWeight(i);
-        for (int c = 0; c < d; ++c) {
-          f[NodeRow(i, c)] = h * g[c];
-          w[c][i] = g[d + c];  // the momentum-like ∂f/∂v₋ at node i
-        }
-      }
+    // H·∂f/∂x₋ into the node rows and the momentum-like w = ∂f/∂v₋, one
+    // sweep over the nodes (gradient_sweep.h).
+    GradientSweep<Real, d> sweep;
+    sweep.norm = &D;
+    sweep.n = n_;
+    sweep.rows = f + NodeRow(0, 0);
+    for (int c = 0; c < d; ++c) {
+      w[c].resize(n_);
+      sweep.x[c] = x[c].data();
+      sweep.v[c] = v[c].data();
+      sweep.w[c] = w[c].data();
     }
+    SweepDiagonalGradient<Real>(problem_, sweep);
     auto& dw = scratch_.dtw;
     for (int c = 0; c < d; ++c) {
       this->AddDbarTransposeHw(
@@ -133,42 +126,19 @@ class ReducedSystem : public SystemBase<P, Real> {
     auto& x = scratch_.x;
     auto& v = scratch_.v;
     Paths(y, x, v);
-    const auto& D = dbar_.base();
     // The pointwise derivatives a block of nodes at a time (density.h).
     auto& points = scratch_.points;
     auto& derivatives = scratch_.derivatives;
     points.resize(2 * d * kBlock);
     derivatives.resize(kBlock);
-    for (int i = node_begin; i < node_end; ++i) {
-      if ((i - node_begin) % kBlock == 0) {
-        const int end = std::min(node_end, i + kBlock);
-        for (int k = i; k < end; ++k)
-          NodePoint(x, v, k, &points[2 * d * (k - i)]);
-        DiagonalDerivativesAt<Real>(problem_, points.data(), end - i,
-                                    derivatives.data());
-      }
-      const auto& mixed = derivatives[(i - node_begin) % kBlock];
-      // Rows: (x₋, v₋) of node i; columns: (x₊, v₊). Both map to path
-      // values through the same local map, since v± = D̄x± (linear part).
-      const Eigen::Matrix<Real, 2 * d, 2 * d> a = D.NormWeight(i) * mixed.dmp;
-      const LocalMap<Real> map = MakeLocalMap(dbar_, i);
-      for (int ea = 0; ea < map.size; ++ea) {
-        const auto& ra = map.entries[ea];
-        // Row entry a's weights applied once: (wx_a, wv_a)·A, d × 2d.
-        const Eigen::Matrix<Real, d, 2 * d> row =
-            ra.wx * a.template topRows<d>() +
-            ra.wv * a.template bottomRows<d>();
-        for (int eb = 0; eb < map.size; ++eb) {
-          const auto& cb = map.entries[eb];
-          const Eigen::Matrix<Real, d, d> block =
-              cb.wx * row.template leftCols<d>() +
-              cb.wv * row.template rightCols<d>();
-          for (int r = 0; r < d; ++r)
-            for (int s = 0; s < d; ++s)
-              if (block(r, s) != Real(0))
-                sink.Add(NodeRow(ra.node, r), X(cb.node, s), block(r, s));
-        }
-      }
+    for (int begin = node_begin; begin < node_end; begin += kBlock) {
+      const int end = std::min(node_end, begin + kBlock);
+      for (int i = begin; i < end; ++i)
+        NodePoint(x, v, i, &points[2 * d * (i - begin)]);
+      DiagonalDerivativesAt<Real>(problem_, points.data(), end - begin,
+                                  derivatives.data());
+      for (int i = begin; i < end; ++i)
+        AddNodeJacobian(i, derivatives[i - begin].dmp, sink);
     }
     for (int c = 0; c < d; ++c) {
       sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
@@ -183,6 +153,33 @@ class ReducedSystem : public SystemBase<P, Real> {
   }
 
  private:
+  // Node i's terms: rows (x₋, v₋) of node i, columns (x₊, v₊), both mapped
+  // to path values through the same local map (v± = D̄x±, linear part);
+  // dmp is the density's mixed block there.
+  template <class Sink>
+  void AddNodeJacobian(int i, const Eigen::Matrix<Real, 2 * d, 2 * d>& dmp,
+                       Sink& sink) const {
+    const Eigen::Matrix<Real, 2 * d, 2 * d> a =
+        dbar_.base().NormWeight(i) * dmp;
+    const LocalMap<Real> map = MakeLocalMap(dbar_, i);
+    for (int ea = 0; ea < map.size; ++ea) {
+      const auto& ra = map.entries[ea];
+      // Row entry a's weights applied once: (wx_a, wv_a)·A, d × 2d.
+      const Eigen::Matrix<Real, d, 2 * d> row =
+          ra.wx * a.template topRows<d>() + ra.wv * a.template bottomRows<d>();
+      for (int eb = 0; eb < map.size; ++eb) {
+        const auto& cb = map.entries[eb];
+        const Eigen::Matrix<Real, d, d> block =
+            cb.wx * row.template leftCols<d>() +
+            cb.wv * row.template rightCols<d>();
+        for (int r = 0; r < d; ++r)
+          for (int s = 0; s < d; ++s)
+            if (block(r, s) != Real(0))
+              sink.Add(NodeRow(ra.node, r), X(cb.node, s), block(r, s));
+      }
+    }
+  }
+
   // Nodes per call of the pointwise derivatives: one call (a virtual one
   // for a precompiled problem) per block, and a block's points and
   // derivatives stay in cache (whole sweeps at once were 8 % slower at
@@ -194,7 +191,7 @@ class ReducedSystem : public SystemBase<P, Real> {
   // system per thread.)
   struct Scratch {
     std::vector<Real> x[d], v[d], w[d], dtw;
-    std::vector<Real> points, grads;  // 2d per node
+    std::vector<Real> points;  // 2d per node
     std::vector<Diagonal<Real, d>> derivatives;
   };
   mutable Scratch scratch_;
