@@ -21,6 +21,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/action/precompiled_dims.h"
 #include "solvers/variational/ivp_types.h"
 
 namespace vivp::studies {
@@ -42,6 +43,23 @@ T AtUnitVelocity(const L& l, const T* q, int i, double s, int j, double t) {
   if (j >= 0) v[j] = v[j] + T(t);
   return l(q, v);
 }
+
+// M⁻¹ into *inverse, or false when M is singular (full-pivoting LU's rank).
+// Compiled once per dimension (legendre.cc), not per Lagrangian.
+template <int d>
+bool InvertMass(const Eigen::Matrix<double, d, d>& m,
+                Eigen::Matrix<double, d, d>* inverse) {
+  const Eigen::FullPivLU<Eigen::Matrix<double, d, d>> lu(m);
+  if (lu.rank() < d) return false;
+  *inverse = lu.inverse();
+  return true;
+}
+
+#define VIVP_EXTERN_INVERT_MASS(D)                                       \
+  extern template bool InvertMass<D>(const Eigen::Matrix<double, D, D>&, \
+                                     Eigen::Matrix<double, D, D>*);
+VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_INVERT_MASS)
+#undef VIVP_EXTERN_INVERT_MASS
 
 }  // namespace detail
 
@@ -80,12 +98,10 @@ LegendreForm<L::kDim> FindLegendreForm(const L& l,
   }
   LegendreForm<d> f;
   f.mass = mass_at(q0);
-  const Eigen::FullPivLU<Eigen::Matrix<double, d, d>> lu(f.mass);
-  if (lu.rank() < d)
+  if (!detail::InvertMass<d>(f.mass, &f.inverse_mass))
     throw std::domain_error(
         "M = ∂²L/∂ẋ² is singular (L is not quadratic in every velocity, "
         "e.g. a first-order system)");
-  f.inverse_mass = lu.inverse();
   const double mscale = f.mass.cwiseAbs().maxCoeff();
   for (int k = 0; k < 9; ++k) {
     // The initial point, then eight points around it (fixed offsets).

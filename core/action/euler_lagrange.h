@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "core/action/density.h"
+#include "core/action/precompiled_dims.h"
 
 namespace vivp::action {
 
@@ -104,5 +105,13 @@ void EquationsOfMotion(const P& problem, int order, const double* y, double* dy,
     }
   }
 }
+
+// The d × d solve of AccelerationFrom compiled once per dimension
+// (euler_lagrange.cc), not in every file that erases a Lagrangian.
+#define VIVP_EXTERN_ACCELERATION(D)                                \
+  extern template Eigen::Matrix<double, D, 1> AccelerationFrom<D>( \
+      const Diagonal<double, D>&, const double*);
+VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_ACCELERATION)
+#undef VIVP_EXTERN_ACCELERATION
 
 }  // namespace vivp::action
