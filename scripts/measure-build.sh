@@ -5,8 +5,9 @@
 #   2. the rest of the Release build (so 1 + 2 = the whole build),
 #   3. adding one Lagrangian file, rebuilding `vivp` and running
 #      `vivp converge` on it.
-# Each compiler invocation's wall time goes to per-file.tsv (seconds, file),
-# slowest first, so that the next cut starts from the biggest file.
+# Each compiler invocation's wall time goes to per-file.tsv (seconds, file,
+# start, end), slowest first, so that the next cut starts from the biggest
+# file; the start and end times show where a core sat idle.
 #
 #   scripts/measure-build.sh [REVISION] [WORKDIR]     (default HEAD, /tmp/vivp-measure)
 set -euo pipefail
@@ -30,7 +31,8 @@ rc=$?
 end=$(date +%s.%N)
 src=""
 for a in "$@"; do case "$a" in *.cc|*.cpp|*.cxx) src=$a ;; esac; done
-printf '%.1f\t%s\n' "$(echo "$end - $start" | bc)" "${src##*/vivp-measure*/src/}" >>"$VIVP_TIMING_LOG"
+printf '%.1f\t%s\t%s\t%s\n' "$(echo "$end - $start" | bc)" "${src##*/vivp-measure*/src/}" \
+  "$start" "$end" >>"$VIVP_TIMING_LOG"
 exit $rc
 LAUNCH
 chmod +x "$work/timed"
@@ -80,4 +82,5 @@ printf 'whole build          %6.1f s\n' "$(echo "$t2 - $t0" | bc)"
 printf 'add Lagrangian→run   %6.1f s\n' "$(echo "$t4 - $t3" | bc)"
 printf 'slowest files (of %s, %s s in all):\n' "$(wc -l <"$work/per-file.tsv")" \
   "$(awk '{s += $1} END {print s}' "$work/per-file.tsv")"
-head -15 "$work/per-file.tsv"
+head -15 "$work/per-file.tsv" | cut -f1,2
+echo "$t0 $t1" >"$work/vivp-window"
