@@ -303,25 +303,13 @@ RunOutcome RunRegistered(const action::ErasedProblem<D>& user, const Scene& s,
       user + action::Erase(problems::Composed<D>{BuiltInEffects(s)}), s, sink);
 }
 
-// Per d, three translation units that build in parallel: the runners
-// (run_dof.cc.in), the steppers (run_stepper_dof.cc.in) and the model of the
-// built-in effects (composed_model_dof.cc.in).
 #define VIVP_EXTERN_RUN(D)                                                   \
   extern template RunOutcome RunVariational(const action::ErasedProblem<D>&, \
                                             const Scene&, RunSink&);         \
   extern template RunOutcome RunEffects<D>(const Scene&, RunSink&);          \
   extern template RunOutcome RunRegistered(const action::ErasedProblem<D>&,  \
-                                           const Scene&, RunSink&);          \
-  extern template RunOutcome RunStepper<D>(const problems::Composed<D>&,     \
                                            const Scene&, RunSink&);
 VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_RUN)
 #undef VIVP_EXTERN_RUN
 
 }  // namespace vivp::scene::detail
-
-namespace vivp::action {
-#define VIVP_EXTERN_COMPOSED_MODEL(D) \
-  extern template class ModelOf<problems::Composed<D>>;
-VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_COMPOSED_MODEL)
-#undef VIVP_EXTERN_COMPOSED_MODEL
-}  // namespace vivp::action
