@@ -4,8 +4,9 @@ namespace vivp::linalg {
 
 DenseLu::DenseLu(const Eigen::MatrixXd& a) : lu_(a) {}
 
-Eigen::VectorXd DenseLu::Solve(const Eigen::VectorXd& b) const {
-  return lu_.solve(b);
+void DenseLu::Solve(const Eigen::Ref<const Eigen::VectorXd>& b,
+                    Eigen::VectorXd& x) const {
+  x = lu_.solve(b);
 }
 
 }  // namespace vivp::linalg

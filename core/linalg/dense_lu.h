@@ -14,8 +14,12 @@ class DenseLu {
  public:
   explicit DenseLu(const Eigen::MatrixXd& a);
 
-  // x with A x = b.
-  Eigen::VectorXd Solve(const Eigen::VectorXd& b) const;
+  // x with A x = b, into x (resized if needed). b a Ref and x the caller's,
+  // so that neither a mapped b nor x is allocated per call: the
+  // Runge–Kutta Newton step calls this with tiny systems, where an
+  // allocation per call showed (implicit midpoint 6–10 % slower).
+  void Solve(const Eigen::Ref<const Eigen::VectorXd>& b,
+             Eigen::VectorXd& x) const;
 
  private:
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;

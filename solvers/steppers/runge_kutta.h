@@ -98,8 +98,11 @@ class RungeKutta {
       }
       for (int i = 0; i < s; ++i) f.col(i) = system_.Field(y + z.col(i));
       const Eigen::MatrixXd g = z - h * f * tableau_.a.transpose();
-      const Eigen::VectorXd dz =
-          lu_->Solve(-Eigen::Map<const Eigen::VectorXd>(g.data(), s * kN));
+      // solve(−g) as −solve(g): the same numbers (rounding is symmetric
+      // under negation), and g is passed as a map, not copied.
+      Eigen::VectorXd& dz = dz_;
+      lu_->Solve(Eigen::Map<const Eigen::VectorXd>(g.data(), s * kN), dz);
+      dz = -dz;
       if (!dz.allFinite()) {
         report.status = Status::kNewtonFailed;
         return report;
@@ -154,6 +157,7 @@ class RungeKutta {
   Eigen::MatrixXd k_;
   std::optional<typename System::Matrix> df_;
   std::optional<linalg::DenseLu> lu_;
+  Eigen::VectorXd dz_;  // the Newton correction, reused across iterations
   double lu_h_ = 0;
   bool refresh_ = false;
 };
