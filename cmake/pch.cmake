@@ -23,10 +23,9 @@ target_precompile_headers(vivp_pch PRIVATE
   <boost/math/special_functions/jacobi_elliptic.hpp>
   <nlohmann/json.hpp>)
 
-# Every C++ target below `dir` reuses it, except the Lagrangians: their files
-# are light (each compiles its pointwise derivatives only), and the Makefile
-# generator lists a precompiled header per source in the target's
-# flags.make, so that adding one Lagrangian file would rebuild all of them
+# Every C++ target below `dir` reuses it, the Lagrangians apart: for them
+# the Makefile generator would list the header per source in the target's
+# flags.make, so that adding one Lagrangian file rebuilt all of them
 # (measured: 63.5 s instead of 17 s from saving a new file to its first
 # `vivp converge`).
 function(vivp_reuse_pch dir)
@@ -44,3 +43,17 @@ function(vivp_reuse_pch dir)
   endforeach()
 endfunction()
 vivp_reuse_pch(${PROJECT_SOURCE_DIR})
+
+# The Lagrangians take it through target-wide flags instead, one line for
+# every file, so that adding a file leaves flags.make as it was (1.3–1.4 s
+# less per Lagrangian file: kepler.cc 5.2 → 3.9 s).
+if(TARGET vivp_lagrangians)
+  set(_pch ${CMAKE_BINARY_DIR}/CMakeFiles/vivp_pch.dir/cmake_pch.hxx)
+  target_compile_options(vivp_lagrangians PRIVATE -Winvalid-pch
+    "SHELL:-Xclang -include-pch -Xclang ${_pch}.pch"
+    "SHELL:-Xclang -include -Xclang ${_pch}")
+  add_dependencies(vivp_lagrangians vivp_pch)
+  get_target_property(_sources vivp_lagrangians SOURCES)
+  set_source_files_properties(${_sources} TARGET_DIRECTORY vivp_lagrangians
+                              PROPERTIES OBJECT_DEPENDS ${_pch}.pch)
+endif()
