@@ -1,0 +1,181 @@
+// Fields in 1+1 dimensions, first pieces: the periodic central differences
+// (core/sbp/periodic.h) — fitted orders, exact skew-symmetry, automatic
+// differentiation through the stencil, argument checks — and the Lagrangian
+// densities of problems/fields (their derivatives against the field
+// equations they stand for).
+#define BOOST_TEST_MODULE fields
+#include <ceres/jet.h>
+
+#include <boost/test/data/test_case.hpp>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "core/autodiff/pointwise.h"
+#include "core/sbp/periodic.h"
+#include "problems/fields/densities.h"
+
+namespace bdata = boost::unit_test::data;
+using vivp::sbp::PeriodicOperator;
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// max_j |(Du)_j − u'(x_j)| for u = exp(sin x) on [0, 2π).
+double MaxError(int order, int n) {
+  const PeriodicOperator<double> d(order, n, kTwoPi);
+  std::vector<double> u(n), du(n);
+  for (int j = 0; j < n; ++j) u[j] = std::exp(std::sin(j * d.dx()));
+  d.Apply<double>(u, du);
+  double e = 0;
+  for (int j = 0; j < n; ++j) {
+    const double x = j * d.dx();
+    e = std::max(e, std::abs(du[j] - std::cos(x) * std::exp(std::sin(x))));
+  }
+  return e;
+}
+
+// Least-squares slope of log(error) against log(Δx).
+double FittedOrder(int order, const std::vector<int>& ns) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (int n : ns) {
+    const double x = std::log(kTwoPi / n), y = std::log(MaxError(order, n));
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double m = double(ns.size());
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+}  // namespace
+
+BOOST_DATA_TEST_CASE(periodic_difference_order, bdata::make({2, 4, 6, 8}),
+                     order) {
+  // Grids in the asymptotic range (exp(sin x) has a broad spectrum: on
+  // 24–64 points order 8 fits 7.64) and far above round-off (order 8 at
+  // n = 128: about 1e-9).
+  const double p = FittedOrder(order, {48, 64, 96, 128});
+  for (int n : {48, 128})
+    BOOST_TEST_MESSAGE("  n = " << n << ": max error " << MaxError(order, n));
+  BOOST_TEST_MESSAGE("order " << order << ": fitted " << p);
+  BOOST_TEST(p >= order - 0.3);
+  BOOST_TEST(p <= order + 1.5);  // not accidentally superconvergent
+}
+
+BOOST_DATA_TEST_CASE(periodic_difference_is_skew, bdata::make({2, 4, 6, 8}),
+                     order) {
+  // D column by column from unit vectors: D + Dᵀ = 0 exactly (the stencil's
+  // coefficients enter antisymmetrically), so with H = Δx·I the SBP property
+  // has no boundary term. Counted, not summed.
+  const int n = order + 3;
+  const PeriodicOperator<double> d(order, n, 3.0);
+  std::vector<std::vector<double>> m(n, std::vector<double>(n));
+  std::vector<double> e(n), col(n);
+  for (int k = 0; k < n; ++k) {
+    std::fill(e.begin(), e.end(), 0.0);
+    e[k] = 1;
+    d.Apply<double>(e, col);
+    for (int i = 0; i < n; ++i) m[i][k] = col[i];
+  }
+  int violations = 0, nonzero = 0;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k) {
+      violations += m[i][k] + m[k][i] != 0.0;
+      nonzero += m[i][k] != 0.0;
+    }
+  BOOST_TEST(violations == 0);
+  BOOST_TEST(nonzero == n * order);  // q entries each side of every row
+}
+
+BOOST_AUTO_TEST_CASE(periodic_difference_differentiates_through_jets) {
+  using Jet = ceres::Jet<double, 2>;
+  const PeriodicOperator<double> d(8, 16, 2.0);
+  std::vector<Jet> u(16);
+  for (int j = 0; j < 16; ++j) u[j] = Jet(std::cos(j * 0.3));
+  u[5].v[0] = 1;  // ∂/∂u_5
+  u[1].v[1] = 1;  // ∂/∂u_1, across the periodic seam for row 14
+  const Jet r3 = d.ApplyAt(u.data(), 3);
+  const Jet r14 = d.ApplyAt(u.data(), 14);
+  BOOST_TEST(r3.v[0] == d.coefficient(2) * d.inv_dx());
+  BOOST_TEST(r14.v[1] == d.coefficient(3) * d.inv_dx());
+}
+
+BOOST_AUTO_TEST_CASE(periodic_difference_rejects_bad_arguments) {
+  BOOST_CHECK_THROW(PeriodicOperator<double>(5, 32, 1.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(PeriodicOperator<double>(8, 8, 1.0), std::invalid_argument);
+  BOOST_CHECK_NO_THROW(PeriodicOperator<double>(8, 9, 1.0));
+  BOOST_CHECK_THROW(PeriodicOperator<double>(2, 16, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(
+      PeriodicOperator<double>(2, 16, std::numeric_limits<double>::infinity()),
+      std::invalid_argument);
+  BOOST_CHECK_THROW(
+      PeriodicOperator<double>(2, 16, std::numeric_limits<double>::quiet_NaN()),
+      std::invalid_argument);
+  try {
+    PeriodicOperator<double>(8, 5, 1.0);
+  } catch (const std::invalid_argument& e) {
+    BOOST_TEST(std::string(e.what()).find("at least 9 points") !=
+               std::string::npos);
+  }
+}
+
+namespace {
+
+// ∂L/∂(φ, φ_t, φ_x) of a one-component density at a point, by AD.
+template <class L>
+Eigen::Vector3d Derivatives(const L& l, double phi, double phi_t,
+                            double phi_x) {
+  const double z[3] = {phi, phi_t, phi_x};
+  return vivp::autodiff::Gradient<double, 3>(
+             [&](const auto* s) { return l(s, s + 1, s + 2); }, z)
+      .second;
+}
+
+void CheckOne(const Eigen::Vector3d& g, double phi_t, double phi_x, double c,
+              double v_prime) {
+  const double tol = 8 * std::numeric_limits<double>::epsilon();
+  BOOST_TEST(std::abs(g[1] - phi_t) <= tol * std::abs(phi_t));
+  BOOST_TEST(std::abs(g[2] + c * c * phi_x) <= tol * std::abs(c * c * phi_x));
+  BOOST_TEST(std::abs(g[0] + v_prime) <= tol * (1 + std::abs(v_prime)));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(densities_give_their_field_equations) {
+  // ∂L/∂φ_t = φ_t, ∂L/∂φ_x = −c²φ_x, ∂L/∂φ = −V′(φ): the Euler–Lagrange
+  // equation φ_tt = c²φ_xx − V′(φ) of each density.
+  const double phi = 0.7, pt = -0.3, px = 1.9;
+  CheckOne(Derivatives(vivp::fields::Wave{.c = 2.0}, phi, pt, px), pt, px, 2.0,
+           0.0);
+  CheckOne(Derivatives(vivp::fields::KleinGordon{.mass = 1.5, .c = 0.5}, phi,
+                       pt, px),
+           pt, px, 0.5, 1.5 * 1.5 * phi);
+  CheckOne(Derivatives(vivp::fields::SineGordon{}, phi, pt, px), pt, px, 1.0,
+           std::sin(phi));
+  CheckOne(
+      Derivatives(vivp::fields::Phi4{.lambda = 2.0, .v = 1.2}, phi, pt, px), pt,
+      px, 1.0, 2.0 * phi * (phi * phi - 1.44));
+
+  // The complex field: V′ = (m² + λ|φ|²) φ_a per component.
+  const vivp::fields::ComplexPhi4 c{.mass = 0.8, .lambda = 1.3};
+  const double z[6] = {0.4, -0.9, 0.2, 0.5, -1.1, 0.3};  // φ, φ_t, φ_x
+  const auto g = vivp::autodiff::Gradient<double, 6>(
+                     [&](const auto* s) { return c(s, s + 2, s + 4); }, z)
+                     .second;
+  const double r2 = z[0] * z[0] + z[1] * z[1];
+  for (int a = 0; a < 2; ++a) {
+    const double tol = 8 * std::numeric_limits<double>::epsilon();
+    BOOST_TEST(std::abs(g[2 + a] - z[2 + a]) <= tol);
+    BOOST_TEST(std::abs(g[4 + a] + z[4 + a]) <= tol);
+    const double vp = (0.8 * 0.8 + 1.3 * r2) * z[a];
+    BOOST_TEST(std::abs(g[a] + vp) <= tol * (1 + std::abs(vp)));
+  }
+}
