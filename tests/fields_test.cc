@@ -1,22 +1,26 @@
 // Fields in 1+1 dimensions, first pieces: the periodic central differences
 // (core/sbp/periodic.h) — fitted orders, exact skew-symmetry, automatic
-// differentiation through the stencil, argument checks — and the Lagrangian
+// differentiation through the stencil, argument checks — the Lagrangian
 // densities of problems/fields (their derivatives against the field
-// equations they stand for).
+// equations they stand for) and the exact solutions (they solve those
+// equations; the kink's topological charge).
 #define BOOST_TEST_MODULE fields
 #include <ceres/jet.h>
 
+#include <algorithm>
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/periodic.h"
 #include "problems/fields/densities.h"
+#include "problems/fields/exact.h"
 
 namespace bdata = boost::unit_test::data;
 using vivp::sbp::PeriodicOperator;
@@ -177,5 +181,73 @@ BOOST_AUTO_TEST_CASE(densities_give_their_field_equations) {
     BOOST_TEST(std::abs(g[4 + a] + z[4 + a]) <= tol);
     const double vp = (0.8 * 0.8 + 1.3 * r2) * z[a];
     BOOST_TEST(std::abs(g[a] + vp) <= tol * (1 + std::abs(vp)));
+  }
+}
+
+namespace {
+
+// φ_tt − c²φ_xx + V′(φ) at (t, x), with φ_tt, φ_xx by AD of the exact
+// formula and V′ = −∂L/∂φ by AD of the density; scale = the sum of the three
+// terms' sizes there.
+template <class Solution, class Density>
+std::pair<double, double> FieldEquationResidual(const Solution& s,
+                                                const Density& l, double c,
+                                                double t, double x) {
+  const double z[2] = {t, x};
+  const auto h = vivp::autodiff::Hessian<double, 2>(
+      [&](const auto* v) { return s(v[0], v[1]); }, z);
+  const double phi = h.value, phi_t = h.gradient[0], phi_x = h.gradient[1];
+  const auto g = Derivatives(l, phi, phi_t, phi_x);  // g[0] = −V′(φ)
+  const double tt = h.hessian(0, 0), xx = h.hessian(1, 1);
+  return {std::abs(tt - c * c * xx - g[0]),
+          std::abs(tt) + c * c * std::abs(xx) + std::abs(g[0])};
+}
+
+// The largest residual over a grid of space-time points, relative to the
+// largest term anywhere on it: far from a kink's core the terms are
+// differences of O(1) numbers (φ² − v² as φ → ±v), so a pointwise ratio
+// would measure that cancellation, not the formula.
+template <class Solution, class Density>
+double WorstResidual(const Solution& s, const Density& l, double c) {
+  double worst = 0, scale = 0;
+  for (double t : {0.0, 0.37, 1.3, 2.9})
+    for (double x : {-7.3, -2.1, -0.4, 0.25, 1.7, 5.5}) {
+      const auto [r, size] = FieldEquationResidual(s, l, c, t, x);
+      worst = std::max(worst, r);
+      scale = std::max(scale, size);
+    }
+  return worst / scale;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(exact_solutions_solve_their_field_equations) {
+  // Relative to the equation's largest term, at 24 space-time points each:
+  // round-off, not a truncation error.
+  using namespace vivp::fields;
+  const double tol = 1e-12;
+  const KleinGordonPlaneWave kg{
+      .density = {.mass = 1.0, .c = 1.0}, .amplitude = 0.3, .k = 1.0};
+  BOOST_TEST(WorstResidual(kg, kg.density, 1.0) <= tol);
+  BOOST_TEST(
+      WorstResidual(SineGordonKink{.velocity = 0.5}, SineGordon{}, 1.0) <= tol);
+  BOOST_TEST(WorstResidual(SineGordonBreather{.omega = 0.5}, SineGordon{},
+                           1.0) <= tol);
+  BOOST_TEST(WorstResidual(SineGordonKinkAntikink{.velocity = 0.5},
+                           SineGordon{}, 1.0) <= tol);
+  const Phi4Kink phi4{.density = {.lambda = 2.0, .v = 1.0}, .velocity = 0.3};
+  BOOST_TEST(WorstResidual(phi4, phi4.density, 1.0) <= tol);
+  const WaveGaussian wave{.density = {.c = 1.5}, .sigma = 0.8};
+  BOOST_TEST(WorstResidual(wave, wave.density, 1.5) <= tol);
+}
+
+BOOST_AUTO_TEST_CASE(sine_gordon_kink_carries_unit_charge) {
+  // Q = [φ(+∞) − φ(−∞)]/2π: 1 for the kink, 0 for the kink–antikink pair.
+  const vivp::fields::SineGordonKink kink{.velocity = 0.5};
+  const vivp::fields::SineGordonKinkAntikink pair{.velocity = 0.5};
+  for (double t : {0.0, 3.0}) {
+    BOOST_TEST(std::abs((kink(t, 60.0) - kink(t, -60.0)) / kTwoPi - 1) <=
+               1e-12);
+    BOOST_TEST(std::abs(pair(t, 60.0) - pair(t, -60.0)) <= 1e-12);
   }
 }
