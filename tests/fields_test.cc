@@ -97,6 +97,19 @@ BOOST_DATA_TEST_CASE(periodic_difference_is_skew, bdata::make({2, 4, 6, 8}),
   BOOST_TEST(nonzero == n * order);  // q entries each side of every row
 }
 
+BOOST_DATA_TEST_CASE(periodic_apply_matches_pointwise, bdata::make({2, 8}),
+                     order) {
+  // Apply reads the interior without wrapping indices; it must agree with
+  // the wrapped single-point form to the last bit.
+  const PeriodicOperator<double> d(order, 40, 5.0);
+  std::vector<double> u(40), du(40);
+  for (int j = 0; j < 40; ++j) u[j] = std::sin(0.7 * j) + 0.1 * j * j;
+  d.Apply<double>(u, du);
+  int differ = 0;
+  for (int j = 0; j < 40; ++j) differ += du[j] != d.ApplyAt(u.data(), j);
+  BOOST_TEST(differ == 0);
+}
+
 BOOST_AUTO_TEST_CASE(periodic_difference_differentiates_through_jets) {
   using Jet = ceres::Jet<double, 2>;
   const PeriodicOperator<double> d(8, 16, 2.0);
@@ -250,4 +263,23 @@ BOOST_AUTO_TEST_CASE(sine_gordon_kink_carries_unit_charge) {
                1e-12);
     BOOST_TEST(std::abs(pair(t, 60.0) - pair(t, -60.0)) <= 1e-12);
   }
+}
+
+BOOST_AUTO_TEST_CASE(exact_solutions_refuse_parameters_without_a_solution) {
+  // |v| ≥ 1, ω outside (0, 1), a pair at rest: an error, not NaN.
+  using namespace vivp::fields;
+  BOOST_CHECK_THROW(SineGordonKink{.velocity = 1.0}(0.0, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(Phi4Kink{.velocity = -1.5}(0.0, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(SineGordonBreather{.omega = 1.0}(0.0, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(SineGordonBreather{.omega = 0.0}(0.0, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(SineGordonKinkAntikink{.velocity = 0.0}(0.0, 0.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(
+      SineGordonKink{.velocity = std::numeric_limits<double>::quiet_NaN()}(0.0,
+                                                                           0.0),
+      std::invalid_argument);
 }

@@ -63,8 +63,9 @@ class PeriodicOperator {
   Real NormWeight() const { return dx_; }
   // c_k, k = 1 … q.
   Real coefficient(int k) const { return c_[k - 1]; }
-  // Index j + offset wrapped into [0, n).
-  int Wrap(int j) const { return ((j % n_) + n_) % n_; }
+  // An index within q of [0, n) wrapped into it (n ≥ 2q + 1, so one
+  // shift suffices).
+  int Wrap(int j) const { return j < 0 ? j + n_ : j >= n_ ? j - n_ : j; }
 
   // (Du)_j; u points at all n values.
   template <class T>
@@ -80,7 +81,16 @@ class PeriodicOperator {
     if (static_cast<int>(u.size()) != n_ || static_cast<int>(out.size()) != n_)
       throw std::invalid_argument("PeriodicOperator::Apply: expected " +
                                   std::to_string(n_) + " values");
-    for (int j = 0; j < n_; ++j) out[j] = ApplyAt(u.data(), j);
+    const int q = half_width();
+    // Only the q points at either end reach across the seam; the interior
+    // reads its neighbours directly.
+    for (int j = 0; j < q; ++j) out[j] = ApplyAt(u.data(), j);
+    for (int j = q; j < n_ - q; ++j) {
+      T acc = T(0.0);
+      for (int k = 1; k <= q; ++k) acc += T(c_[k - 1]) * (u[j + k] - u[j - k]);
+      out[j] = acc * T(inv_dx_);
+    }
+    for (int j = n_ - q; j < n_; ++j) out[j] = ApplyAt(u.data(), j);
   }
 
  private:

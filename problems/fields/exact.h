@@ -16,12 +16,24 @@
 #pragma once
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "problems/fields/densities.h"
 
 namespace vivp::fields {
 
 namespace detail {
+// γ = 1/√(1 − v²); a speed at or above that of light (1 here) has no
+// solution, so it is refused rather than turned into NaN.
+inline double LorentzFactor(double v) {
+  if (!(std::abs(v) < 1.0))
+    throw std::invalid_argument(
+        "a soliton's velocity must satisfy |v| < 1 (got " + std::to_string(v) +
+        ")");
+  return 1.0 / std::sqrt(1.0 - v * v);
+}
+
 // atan(y) as atan2(y, 1): Eigen's AutoDiffScalar has atan2, not atan.
 template <class T>
 T Atan(const T& y) {  // called with a concrete T, not an expression
@@ -49,7 +61,7 @@ struct SineGordonKink {
   template <class T>
   T operator()(const T& t, const T& x) const {
     using std::exp;
-    const double gamma = 1.0 / std::sqrt(1.0 - velocity * velocity);
+    const double gamma = detail::LorentzFactor(velocity);
     const T y = exp(T(gamma) * (x - T(x0) - T(velocity) * t));
     return T(4.0) * detail::Atan<T>(y);
   }
@@ -61,6 +73,10 @@ struct SineGordonBreather {
   T operator()(const T& t, const T& x) const {
     using std::cosh;
     using std::sin;
+    if (!(omega > 0.0 && omega < 1.0))
+      throw std::invalid_argument(
+          "the sine-Gordon breather needs 0 < ω < 1 (got " +
+          std::to_string(omega) + ")");
     const double s = std::sqrt(1.0 - omega * omega);
     const T y = T(s / omega) * sin(T(omega) * t) / cosh(T(s) * x);
     return T(4.0) * detail::Atan<T>(y);
@@ -73,7 +89,11 @@ struct SineGordonKinkAntikink {
   T operator()(const T& t, const T& x) const {
     using std::cosh;
     using std::sinh;
-    const double gamma = 1.0 / std::sqrt(1.0 - velocity * velocity);
+    if (velocity == 0.0)
+      throw std::invalid_argument(
+          "the kink–antikink pair needs a velocity 0 < |v| < 1 (at v = 0 "
+          "there is no pair solution of this form)");
+    const double gamma = detail::LorentzFactor(velocity);
     const T y =
         sinh(T(gamma * velocity) * t) / (T(velocity) * cosh(T(gamma) * x));
     return T(4.0) * detail::Atan<T>(y);
@@ -86,7 +106,7 @@ struct Phi4Kink {
   template <class T>
   T operator()(const T& t, const T& x) const {
     using std::tanh;
-    const double gamma = 1.0 / std::sqrt(1.0 - velocity * velocity);
+    const double gamma = detail::LorentzFactor(velocity);
     const double a = density.v * std::sqrt(0.5 * density.lambda) * gamma;
     return T(density.v) * tanh(T(a) * (x - T(x0) - T(velocity) * t));
   }
