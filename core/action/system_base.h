@@ -49,21 +49,11 @@ class SystemBase {
     }
   }
 
-  // out[j] += (D̄ᵀ H w)_j for one component, through HD + DᵀH = B:
-  // DᵀHw = Bw − H D w, so the only stencil work is D applied (in its
-  // exact-on-constants difference form) to w, and D̄ᵀ = Dᵀ + penalty·E0 adds
-  // penalty·H_0 w_0 = −σ0 w_0. An assembled DᵀHD would have row sums that
-  // are not exactly zero, a spurious constant force (docs/method.md §6).
-  // `dw` is scratch of any size.
+  // out[j] += (D̄ᵀ H w)_j for one component (regularized.h).
   template <class Out>
   void AddDbarTransposeHw(const std::vector<Real>& w, std::vector<Real>& dw,
                           Out&& out) const {
-    const auto& D = dbar_.base();
-    dw.resize(n_);
-    D.Apply(std::span<const Real>(w), std::span<Real>(dw));
-    for (int j = 0; j < n_; ++j) out(j) -= D.NormWeight(j) * dw[j];
-    out(0) += (-dbar_.sigma0() - Real(1)) * w[0];
-    out(n_ - 1) += w[n_ - 1];
+    sbp::AddDbarTransposeHw(dbar_, w, dw, out);
   }
 
   // Calls fn(column, D[i][column]) for the nonzeros of row i of plain D.

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/sbp/operator.h"
 
@@ -70,5 +71,24 @@ class RegularizedOperator {
   Real sigma0_;
   Real penalty_;
 };
+
+// out(j) += (D̄ᵀ H w)_j for j = 0 … N−1, through HD + DᵀH = B:
+// DᵀHw = Bw − H D w, so the only stencil work is D applied (in its
+// exact-on-constants difference form) to w, and D̄ᵀ = Dᵀ + penalty·E0 adds
+// penalty·H_0 w_0 = −σ0 w_0. An assembled DᵀHD would have row sums that are
+// not exactly zero, a spurious constant force (docs/method.md §6). `dw` is
+// scratch of any size.
+template <class Real, class Out>
+void AddDbarTransposeHw(const RegularizedOperator<Real>& dbar,
+                        const std::vector<Real>& w, std::vector<Real>& dw,
+                        Out&& out) {
+  const auto& D = dbar.base();
+  const int n = D.points();
+  dw.resize(n);
+  D.Apply(std::span<const Real>(w), std::span<Real>(dw));
+  for (int j = 0; j < n; ++j) out(j) -= D.NormWeight(j) * dw[j];
+  out(0) += (-dbar.sigma0() - Real(1)) * w[0];
+  out(n - 1) += w[n - 1];
+}
 
 }  // namespace vivp::sbp

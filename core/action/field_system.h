@@ -1,0 +1,347 @@
+// The reduced critical-point equations of the doubled action of a field in
+// 1+1 dimensions (docs/fields.md): the point-mechanics construction of
+// reduced_system.h with one path per spatial point, coupled through the
+// spatial derivative. On an Nt × Nx grid, with L(φ, φ_t, φ_x) the density,
+//
+//   S = Σ_ij Hᵗ_i Hˣ_j [L(φ1, D̄_t φ1, D_x φ1) − L(φ2, D̄_t φ2, D_x φ2)]
+//       + Σ_j Hˣ_j [λ1·(φ1(0) − φ₀) + λ2·((D_t φ1)(0) − π₀)
+//                   + λ3·(φ1(N) − φ2(N)) + λ4·((D_t φ1)(N) − (D_t φ2)(N))]_j
+//
+// where the regularized time operator D̄_t (affine coordinates, its shift
+// φ₀(x_j)) acts per spatial point and D_x per time slice. In φ₊, φ₋ the
+// solution has φ₋ = λ1 = λ2 = 0 and what remains, at φ₋ = 0, is
+//
+//   ∂S/∂φ₋(i, j) = Hᵗ_i Hˣ_j ∂L/∂φ + Hˣ_j (D̄ᵀ_t Hᵗ ∂L/∂φ_t)_i
+//                 + Hᵗ_i (Dᵀ_x Hˣ ∂L/∂φ_x)_j + Hˣ_j (λ3 δ_{i,N} + λ4 D_{N,i})
+//
+// plus the initial-data rows. The multipliers carry Hˣ_j so that, as in
+// point mechanics, λ3 = −∂L/∂φ_t at t = T (a momentum density).
+//
+// Unknowns, space-major: the block of spatial point j holds φ₊(i, j, a) at
+// j·B + i·m + a (i < Nt, m components), then λ3(j, ·) and λ4(j, ·);
+// B = (Nt + 2)·m. Rows use the same positions: the node rows, then the
+// initial value and initial velocity rows of point j. A time window is then
+// banded up to the periodic corners.
+//
+// The Jacobian is assembled pointwise: at each (i, j) the density sees φ,
+// φ_t (row i of D̄_t along the column j) and φ_x (row j of D_x along the slice
+// i); its 3m × 3m Hessian from automatic differentiation is chained through
+// those rows. Time-neighbour × space-neighbour entries appear only when the
+// density couples φ_t and φ_x (none of the shipped densities does).
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/autodiff/pointwise.h"
+#include "core/sbp/regularized.h"
+#include "core/sbp/space.h"
+
+namespace vivp::action {
+
+// φ, φ_t and φ_x on the grid, time-major: value (i·Nx + j)·m + a.
+template <class Real>
+struct FieldValues {
+  std::vector<Real> phi, phi_t, phi_x;
+};
+
+template <class Density, class Real = double>
+class FieldSystem {
+ public:
+  static constexpr int m = Density::kComponents;
+  static constexpr int K = 3 * m;  // the density's arguments (φ, φ_t, φ_x)
+  using Hessian = Eigen::Matrix<Real, K, K>;
+
+  // phi0, pi0: φ(0, x_j) and φ_t(0, x_j), value j·m + a.
+  FieldSystem(const Density& density, const sbp::RegularizedOperator<Real>& dt,
+              const sbp::SpaceDerivative<Real>& dx, std::vector<Real> phi0,
+              std::vector<Real> pi0)
+      : density_(density),
+        dt_(dt),
+        dx_(dx),
+        nt_(dt.points()),
+        nx_(dx.points()) {
+    SetInitial(std::move(phi0), std::move(pi0));
+    couples_t_x_ = DetectTimeSpaceCoupling();
+  }
+
+  int time_points() const { return nt_; }
+  int space_points() const { return nx_; }
+  int block() const { return (nt_ + 2) * m; }
+  int size() const { return nx_ * block(); }
+  int Phi(int i, int j, int a) const { return j * block() + i * m + a; }
+  int Lambda3(int j, int a) const { return j * block() + nt_ * m + a; }
+  int Lambda4(int j, int a) const { return j * block() + (nt_ + 1) * m + a; }
+  // The initial-data rows of point j share the multipliers' positions.
+  int InitialValueRow(int j, int a) const { return Lambda3(j, a); }
+  int InitialVelocityRow(int j, int a) const { return Lambda4(j, a); }
+  bool couples_time_and_space() const { return couples_t_x_; }
+  const sbp::RegularizedOperator<Real>& time_operator() const { return dt_; }
+  const sbp::SpaceDerivative<Real>& space_operator() const { return dx_; }
+  const Density& density() const { return density_; }
+  const std::vector<Real>& phi0() const { return phi0_; }
+  const std::vector<Real>& pi0() const { return pi0_; }
+
+  // New initial data on the same grid (marching reuses the system).
+  void SetInitial(std::vector<Real> phi0, std::vector<Real> pi0) {
+    const std::size_t n = static_cast<std::size_t>(nx_) * m;
+    if (phi0.size() != n || pi0.size() != n)
+      throw std::invalid_argument(
+          "initial data: expected " + std::to_string(n) +
+          " values of φ and of φ_t (one per spatial point and component), got " +
+          std::to_string(phi0.size()) + " and " + std::to_string(pi0.size()));
+    phi0_ = std::move(phi0);
+    pi0_ = std::move(pi0);
+  }
+
+  // φ, D̄_t φ and D_x φ of the unknowns y on the grid.
+  void Fields(const Real* y, FieldValues<Real>& out) const {
+    const std::size_t n = static_cast<std::size_t>(nt_) * nx_ * m;
+    out.phi.resize(n);
+    out.phi_t.resize(n);
+    out.phi_x.resize(n);
+    auto& col = scratch_.col;
+    auto& col_t = scratch_.col_t;
+    col.resize(nt_);
+    col_t.resize(nt_);
+    for (int j = 0; j < nx_; ++j)
+      for (int a = 0; a < m; ++a) {
+        for (int i = 0; i < nt_; ++i) col[i] = y[Phi(i, j, a)];
+        dt_.Apply(std::span<const Real>(col), phi0_[j * m + a],
+                  std::span<Real>(col_t));
+        for (int i = 0; i < nt_; ++i) {
+          out.phi[At(i, j, a)] = col[i];
+          out.phi_t[At(i, j, a)] = col_t[i];
+        }
+      }
+    auto& row = scratch_.row;
+    auto& row_x = scratch_.row_x;
+    row.resize(nx_);
+    row_x.resize(nx_);
+    for (int i = 0; i < nt_; ++i)
+      for (int a = 0; a < m; ++a) {
+        for (int j = 0; j < nx_; ++j) row[j] = out.phi[At(i, j, a)];
+        dx_.Apply(std::span<const Real>(row), std::span<Real>(row_x));
+        for (int j = 0; j < nx_; ++j) out.phi_x[At(i, j, a)] = row_x[j];
+      }
+  }
+
+  int At(int i, int j, int a) const { return (i * nx_ + j) * m + a; }
+
+  // The density's derivatives ∂L/∂(φ, φ_t, φ_x) at grid point (i, j).
+  Eigen::Matrix<Real, K, 1> PointGradient(const FieldValues<Real>& v, int i,
+                                          int j) const {
+    Real z[K];
+    Point(v, i, j, z);
+    return autodiff::Gradient<Real, K>(Call(), z).second;
+  }
+  Hessian PointHessian(const FieldValues<Real>& v, int i, int j) const {
+    Real z[K];
+    Point(v, i, j, z);
+    return autodiff::Hessian<Real, K>(Call(), z).hessian;
+  }
+  Real PointValue(const FieldValues<Real>& v, int i, int j) const {
+    Real z[K];
+    Point(v, i, j, z);
+    return density_(z, z + m, z + 2 * m);
+  }
+
+  void Residual(const Real* y, Real* f) const {
+    auto& v = scratch_.values;
+    Fields(y, v);
+    const std::size_t n = static_cast<std::size_t>(nt_) * nx_ * m;
+    auto& g = scratch_.g;  // ∂L/∂φ, ∂L/∂φ_t, ∂L/∂φ_x, time-major
+    g.resize(3 * n);
+    for (int i = 0; i < nt_; ++i)
+      for (int j = 0; j < nx_; ++j) {
+        const auto grad = PointGradient(v, i, j);
+        for (int a = 0; a < m; ++a) {
+          g[At(i, j, a)] = grad[a];
+          g[n + At(i, j, a)] = grad[m + a];
+          g[2 * n + At(i, j, a)] = grad[2 * m + a];
+        }
+      }
+    const auto& D = dt_.base();
+    auto& col = scratch_.col;
+    auto& dw = scratch_.col_t;
+    col.resize(nt_);
+    for (int j = 0; j < nx_; ++j) {
+      const Real hx = dx_.NormWeight(j);
+      for (int a = 0; a < m; ++a) {
+        for (int i = 0; i < nt_; ++i) {
+          f[Phi(i, j, a)] = D.NormWeight(i) * hx * g[At(i, j, a)];
+          col[i] = g[n + At(i, j, a)];
+        }
+        // Hˣ_j (D̄ᵀ Hᵗ ∂L/∂φ_t)_i, on unscaled values first so that the
+        // time direction rounds as in point mechanics.
+        auto& t = scratch_.t;
+        t.assign(nt_, Real(0));
+        sbp::AddDbarTransposeHw(dt_, col, dw,
+                                [&](int i) -> Real& { return t[i]; });
+        for (int i = 0; i < nt_; ++i) f[Phi(i, j, a)] += hx * t[i];
+        f[Phi(nt_ - 1, j, a)] += hx * y[Lambda3(j, a)];
+        const auto last = D.row(nt_ - 1);
+        for (std::size_t k = 0; k < last.coeffs.size(); ++k)
+          f[Phi(last.first + static_cast<int>(k), j, a)] +=
+              hx * y[Lambda4(j, a)] * last.coeffs[k] * D.inv_dt();
+        f[InitialValueRow(j, a)] = y[Phi(0, j, a)] - phi0_[j * m + a];
+        for (int i = 0; i < nt_; ++i) col[i] = y[Phi(i, j, a)];
+        f[InitialVelocityRow(j, a)] = D.ApplyRow(0, col.data()) - pi0_[j * m + a];
+      }
+    }
+    auto& row = scratch_.row;
+    auto& drow = scratch_.row_x;
+    auto& s = scratch_.s;
+    row.resize(nx_);
+    drow.resize(nx_);
+    for (int i = 0; i < nt_; ++i) {
+      const Real ht = D.NormWeight(i);
+      for (int a = 0; a < m; ++a) {
+        for (int j = 0; j < nx_; ++j) row[j] = g[2 * n + At(i, j, a)];
+        s.assign(nx_, Real(0));
+        dx_.AddTransposeH(std::span<const Real>(row), std::span<Real>(drow),
+                          std::span<Real>(s));
+        for (int j = 0; j < nx_; ++j) f[Phi(i, j, a)] += ht * s[j];
+      }
+    }
+  }
+
+  // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
+  // same position are summed by the sink. The entries fed depend on the
+  // grid and the density only, never on y (a sink may fix its pattern on
+  // the first call).
+  template <class Sink>
+  void Jacobian(const Real* y, Sink& sink) const {
+    auto& v = scratch_.values;
+    Fields(y, v);
+    const auto& D = dt_.base();
+    Local local[kMaxLocal];
+    for (int i = 0; i < nt_; ++i)
+      for (int j = 0; j < nx_; ++j) {
+        const Hessian h = D.NormWeight(i) * dx_.NormWeight(j) *
+                          PointHessian(v, i, j);
+        const int count = LocalEntries(i, j, local);
+        for (int r = 0; r < count; ++r) {
+          const auto& lr = local[r];
+          // Row entry r's weights applied once: (wφ, wt, wx)·H, m × K.
+          const Eigen::Matrix<Real, m, K> row =
+              lr.w[0] * h.template topRows<m>() +
+              lr.w[1] * h.template middleRows<m>(m) +
+              lr.w[2] * h.template bottomRows<m>();
+          for (int c = 0; c < count; ++c) {
+            const auto& lc = local[c];
+            // A time neighbour and a space neighbour meet only through
+            // ∂²L/∂φ_t∂φ_x.
+            if (!couples_t_x_ && lr.kind + lc.kind == 3) continue;
+            const Eigen::Matrix<Real, m, m> b =
+                lc.w[0] * row.template leftCols<m>() +
+                lc.w[1] * row.template middleCols<m>(m) +
+                lc.w[2] * row.template rightCols<m>();
+            for (int a = 0; a < m; ++a)
+              for (int e = 0; e < m; ++e)
+                sink.Add(Phi(lr.i, lr.j, a), Phi(lc.i, lc.j, e), b(a, e));
+          }
+        }
+      }
+    const auto last = D.row(nt_ - 1);
+    const auto first = D.row(0);
+    for (int j = 0; j < nx_; ++j) {
+      const Real hx = dx_.NormWeight(j);
+      for (int a = 0; a < m; ++a) {
+        sink.Add(Phi(nt_ - 1, j, a), Lambda3(j, a), hx);
+        for (std::size_t k = 0; k < last.coeffs.size(); ++k)
+          if (last.coeffs[k] != Real(0))
+            sink.Add(Phi(last.first + static_cast<int>(k), j, a),
+                     Lambda4(j, a), hx * (last.coeffs[k] * D.inv_dt()));
+        sink.Add(InitialValueRow(j, a), Phi(0, j, a), Real(1));
+        for (std::size_t k = 0; k < first.coeffs.size(); ++k)
+          if (first.coeffs[k] != Real(0))
+            sink.Add(InitialVelocityRow(j, a),
+                     Phi(first.first + static_cast<int>(k), j, a),
+                     first.coeffs[k] * D.inv_dt());
+      }
+    }
+  }
+
+ private:
+  // One unknown node (i, j) the density at a grid point depends on, with
+  // ∂(φ, φ_t, φ_x)/∂φ₊(i, j); kind 0 = the point itself, 1 = a time
+  // neighbour, 2 = a space neighbour.
+  struct Local {
+    int i, j, kind;
+    Real w[3];
+  };
+  // 1 + the widest row of D̄_t (SBP84: 12) + the widest row of D_x.
+  static constexpr int kMaxLocal = 32;
+
+  int LocalEntries(int i, int j, Local* out) const {
+    int count = 0;
+    out[count++] = {i, j, 0, {Real(1), Real(0), Real(0)}};
+    const auto& D = dt_.base();
+    const auto row = D.row(i);
+    for (std::size_t k = 0; k < row.coeffs.size(); ++k) {
+      const int node = row.first + static_cast<int>(k);
+      Real w = row.coeffs[k] * D.inv_dt();
+      if (i == 0 && node == 0) w += dt_.penalty();
+      if (node == i)
+        out[0].w[1] = w;
+      else if (w != Real(0))
+        out[count++] = {node, j, 1, {Real(0), w, Real(0)}};
+    }
+    dx_.ForRow(j, [&](int l, Real w) {
+      if (l == j)
+        out[0].w[2] += w;
+      else
+        out[count++] = {i, l, 2, {Real(0), Real(0), w}};
+    });
+    return count;
+  }
+
+  void Point(const FieldValues<Real>& v, int i, int j, Real* z) const {
+    for (int a = 0; a < m; ++a) {
+      z[a] = v.phi[At(i, j, a)];
+      z[m + a] = v.phi_t[At(i, j, a)];
+      z[2 * m + a] = v.phi_x[At(i, j, a)];
+    }
+  }
+
+  auto Call() const {
+    return [this](const auto* z) { return density_(z, z + m, z + 2 * m); };
+  }
+
+  // Whether ∂²L/∂φ_t∂φ_x is nonzero anywhere: sampled at a few generic
+  // points (a density that couples them does so at almost every point).
+  bool DetectTimeSpaceCoupling() const {
+    for (int s = 0; s < 4; ++s) {
+      Real z[K];
+      for (int k = 0; k < K; ++k)
+        z[k] = Real(0.3) + Real(0.17) * Real(s) + Real(0.11) * Real(k * k % 7);
+      const Hessian h = autodiff::Hessian<Real, K>(Call(), z).hessian;
+      if (h.template block<m, m>(m, 2 * m).cwiseAbs().maxCoeff() != Real(0))
+        return true;
+    }
+    return false;
+  }
+
+  const Density& density_;
+  const sbp::RegularizedOperator<Real>& dt_;
+  const sbp::SpaceDerivative<Real>& dx_;
+  int nt_, nx_;
+  std::vector<Real> phi0_, pi0_;
+  bool couples_t_x_ = false;
+
+  // Work arrays reused across evaluations (not thread-safe).
+  struct Scratch {
+    FieldValues<Real> values;
+    std::vector<Real> g, col, col_t, row, row_x, t, s;
+  };
+  mutable Scratch scratch_;
+};
+
+}  // namespace vivp::action

@@ -1,0 +1,107 @@
+// The Courant-like resolution limit of the space-time discretization.
+//
+// In point mechanics the discrete critical point stays bounded only while
+// Δt·ω is below a limit of the time operator (solvers/variational/
+// resolution.h: SBP21 0.70, SBP42 1.00, SBP63 0.95, SBP84 0.90). A field
+// discretized in space is a system of coupled oscillators: linearized about
+// a state, φ_tt = −M⁻¹(C·(−D_x²) + K)φ with M = ∂²L/∂φ_t², C = −∂²L/∂φ_x²
+// and K = −∂²L/∂φ² per spatial point, so its fastest frequency is
+//
+//   ω_max² ≈ max_j [λ_max(M⁻¹C)·ρ(D_x)² + λ_max(M⁻¹K)],
+//
+// ρ(D_x) the spectral radius of the spatial derivative (for periodic
+// differences of order 2q the largest |Σ 2c_k sin kθ|/Δx, ≈ π/Δx · 0.59 …
+// 0.86). The limit is the point-mechanics one for this ω: measured for the
+// Klein–Gordon field, whose spatial Fourier modes are exactly independent
+// oscillators (tests/fields_solve_test.cc, `resolution_limit_is_the_modes`).
+#pragma once
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/action/field_system.h"
+#include "core/linalg/small_eigen.h"
+#include "core/sbp/space.h"
+
+namespace vivp::fields {
+
+// ρ(D_x): exact for periodic differences (the symbol's maximum over a fine
+// θ grid including the modes of the grid), by power iteration on
+// H⁻¹DᵀHD = −D·D through the SBP property for an SBP operator.
+inline double SpectralRadius(const sbp::SpaceDerivative<double>& dx) {
+  if (const auto* p = dx.periodic_operator()) {
+    double best = 0;
+    const int n = p->points();
+    for (int k = 0; k <= n / 2; ++k) {
+      const double theta = 2 * std::numbers::pi * k / n;
+      double s = 0;
+      for (int l = 1; l <= p->half_width(); ++l)
+        s += 2 * p->coefficient(l) * std::sin(l * theta);
+      best = std::max(best, std::abs(s));
+    }
+    return best * p->inv_dx();
+  }
+  // The largest eigenvalue of DᵀHD in the H inner product is ρ(D)² for the
+  // singular values; power iteration on it.
+  const int n = dx.points();
+  std::vector<double> u(n), du(n), w(n, 0.0), scratch(n);
+  for (int j = 0; j < n; ++j) u[j] = std::cos(2.9 * j) + 0.1;
+  double lambda = 0;
+  for (int it = 0; it < 200; ++it) {
+    dx.Apply<double>(u, du);
+    std::fill(w.begin(), w.end(), 0.0);
+    dx.AddTransposeH<double>(du, scratch, w);  // w = DᵀH D u
+    double num = 0, den = 0;
+    for (int j = 0; j < n; ++j) {
+      w[j] /= dx.NormWeight(j);
+      num += dx.NormWeight(j) * u[j] * w[j];
+      den += dx.NormWeight(j) * u[j] * u[j];
+    }
+    lambda = num / den;
+    double norm = 0;
+    for (double x : w) norm = std::max(norm, std::abs(x));
+    for (int j = 0; j < n; ++j) u[j] = w[j] / norm;
+  }
+  return std::sqrt(std::max(lambda, 0.0));
+}
+
+// ω_max of the linearization about the state (φ, φ_t) on the grid.
+template <class Density>
+double FastestFieldFrequency(const Density& density,
+                             const sbp::SpaceDerivative<double>& dx,
+                             const std::vector<double>& phi,
+                             const std::vector<double>& phi_t) {
+  constexpr int m = Density::kComponents;
+  constexpr int K = 3 * m;
+  const int n = dx.points();
+  const double rho = SpectralRadius(dx);
+  std::vector<double> comp(n), dcomp(n), phi_x(phi.size());
+  for (int a = 0; a < m; ++a) {
+    for (int j = 0; j < n; ++j) comp[j] = phi[j * m + a];
+    dx.Apply<double>(comp, dcomp);
+    for (int j = 0; j < n; ++j) phi_x[j * m + a] = dcomp[j];
+  }
+  double omega2 = 0;
+  for (int j = 0; j < n; ++j) {
+    double z[K];
+    for (int a = 0; a < m; ++a) {
+      z[a] = phi[j * m + a];
+      z[m + a] = phi_t[j * m + a];
+      z[2 * m + a] = phi_x[j * m + a];
+    }
+    const auto h = autodiff::Hessian<double, K>(
+        [&](const auto* w) { return density(w, w + m, w + 2 * m); }, z);
+    const Eigen::MatrixXd mass = h.hessian.template block<m, m>(m, m);
+    const Eigen::MatrixXd c = -h.hessian.template block<m, m>(2 * m, 2 * m);
+    const Eigen::MatrixXd k = -h.hessian.template block<m, m>(0, 0);
+    const double wc = linalg::LargestGeneralizedEigenvalue(c, mass);
+    const double wk = linalg::LargestGeneralizedEigenvalue(k, mass);
+    omega2 = std::max(omega2, std::max(wc, 0.0) * rho * rho + wk);
+  }
+  return std::sqrt(std::max(omega2, 0.0));
+}
+
+}  // namespace vivp::fields

@@ -1,0 +1,219 @@
+// Solve a field's initial value problem from its action: one global
+// space-time solve, or time-slab marching with the multiplier hand-off per
+// spatial point (docs/fields.md).
+//
+//   vivp::fields::SineGordon density;
+//   auto dx = vivp::sbp::SpaceDerivative<double>::Periodic(8, 200, -20, 40);
+//   vivp::fields::FieldGrid grid{.op = "sbp42", .points = 201, .t_end = 2};
+//   auto s = vivp::fields::SolveField(density, dx, grid, phi0, pi0);
+//   // s.phi: every kept slice, value (slice·Nx + j)·m + a
+//
+// Windows of W time points cover W − 1 intervals; the last one takes the
+// remainder (at least the operator's minimum). Each window is an IVP of its
+// own whose initial data are the previous window's corrected end state
+// (end_state.h). The Jacobian's pattern and ordering are shared by all
+// windows of one size, and the factorization too: Newton starts each window
+// with chord steps on the previous window's factors (for a linear field the
+// same matrix, so one factorization serves the whole march) and refactors
+// only when they stop contracting.
+//
+// Before solving, the grid is checked against the resolution limit
+// (resolution.h) at the initial state; a march checks every window's
+// initial state. An under-resolved run is reported as not converged with
+// the number of time points it needs, never returned as a solution.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/action/field_system.h"
+#include "core/sbp/builder.h"
+#include "core/sbp/regularized.h"
+#include "solvers/fields/end_state.h"
+#include "solvers/fields/newton.h"
+#include "solvers/fields/resolution.h"
+#include "solvers/variational/resolution.h"
+
+namespace vivp::fields {
+
+struct FieldGrid {
+  std::string op = "sbp42";  // the time operator: sbp21, sbp42, sbp63, sbp84
+  long long points = 65;     // time points on [0, t_end]
+  double t_end = 1.0;
+  // Time points per window; 0 (or ≥ points) solves globally.
+  long long window_points = 0;
+};
+
+struct FieldSolveOptions {
+  FieldNewtonOptions newton;
+  bool keep_field = true;  // every slice of φ and φ_t in FieldSolution
+  bool check_resolution = true;
+};
+
+struct FieldSolution {
+  bool converged = false;
+  std::string message;
+  int nx = 0, components = 0;
+  std::vector<double> t;                // the kept slices' times
+  std::vector<double> phi, phi_t;       // kept slices, (s·Nx + j)·m + a
+  FieldEnd end;                         // corrected state at t_end
+  std::vector<double> end_phi_node;     // φ at the last node, uncorrected
+  double dt = 0, omega_dt = 0, limit = 0;  // Δt·ω_max at the worst window
+  int windows = 0, newton_iterations = 0, corrections = 0;
+  long long factorizations = 0, jacobian_nonzeros = 0, factor_nonzeros = 0;
+  double residual_norm = 0;             // worst window's |F|∞
+  double seconds_assembly = 0, seconds_factor = 0, seconds_solve = 0,
+         seconds_residual = 0, seconds_total = 0;
+};
+
+namespace detail {
+
+// The window lengths (points) of a march of `points` over W-point windows.
+inline std::vector<long long> WindowSizes(long long points, long long w,
+                                          long long min_points) {
+  std::vector<long long> sizes;
+  if (w <= 0 || w >= points) return {points};
+  long long left = points - 1;  // intervals
+  while (left > 0) {
+    long long take = std::min(left, w - 1);
+    // A short remainder is merged into the last window.
+    if (left - take > 0 && left - take < min_points - 1) take = left;
+    sizes.push_back(take + 1);
+    left -= take;
+  }
+  return sizes;
+}
+
+}  // namespace detail
+
+template <class Density>
+FieldSolution SolveField(const Density& density,
+                         const sbp::SpaceDerivative<double>& dx,
+                         const FieldGrid& grid, std::vector<double> phi0,
+                         std::vector<double> pi0,
+                         const FieldSolveOptions& options = {}) {
+  constexpr int m = Density::kComponents;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  FieldSolution s;
+  s.nx = dx.points();
+  s.components = m;
+  const auto& table = sbp::Table(grid.op);
+  if (grid.points < table.min_points)
+    throw std::invalid_argument(
+        grid.op + " needs at least " + std::to_string(table.min_points) +
+        " time points, got " + std::to_string(grid.points));
+  if (!(grid.t_end > 0) || !std::isfinite(grid.t_end))
+    throw std::invalid_argument("t_end must be positive and finite");
+  const std::size_t n = static_cast<std::size_t>(s.nx) * m;
+  if (phi0.size() != n || pi0.size() != n)
+    throw std::invalid_argument("initial data: expected " + std::to_string(n) +
+                                " values of φ and of φ_t, got " +
+                                std::to_string(phi0.size()) + " and " +
+                                std::to_string(pi0.size()));
+  for (std::size_t k = 0; k < n; ++k)
+    if (!std::isfinite(phi0[k]) || !std::isfinite(pi0[k]))
+      throw std::invalid_argument("initial data: non-finite value at x = " +
+                                  std::to_string(dx.x(int(k / m))));
+  s.dt = grid.t_end / double(grid.points - 1);
+  s.limit = variational::StabilityLimit(grid.op);
+  const auto sizes =
+      detail::WindowSizes(grid.points, grid.window_points, table.min_points);
+
+  FieldFactorCache cache(options.newton.solver);
+  long long cached_size = -1;
+  double t0 = 0;
+  std::vector<double> phi = std::move(phi0), pi = std::move(pi0);
+  auto keep = [&](const action::FieldSystem<Density>& sys, const double* y,
+                  int first, double t_start) {
+    if (!options.keep_field) return;
+    action::FieldValues<double> v;
+    sys.Fields(y, v);
+    for (int i = first; i < sys.time_points(); ++i) {
+      s.t.push_back(t_start + s.dt * i);
+      const auto b = v.phi.begin() + sys.At(i, 0, 0);
+      s.phi.insert(s.phi.end(), b, b + n);
+      const auto c = v.phi_t.begin() + sys.At(i, 0, 0);
+      s.phi_t.insert(s.phi_t.end(), c, c + n);
+    }
+  };
+  for (std::size_t w = 0; w < sizes.size(); ++w) {
+    const long long pts = sizes[w];
+    const double t1 = t0 + s.dt * double(pts - 1);
+    if (options.check_resolution) {
+      const double od = s.dt * FastestFieldFrequency(density, dx, phi, pi);
+      s.omega_dt = std::max(s.omega_dt, od);
+      if (od > s.limit) {
+        const long long need = static_cast<long long>(
+            std::ceil(grid.t_end * (od / s.dt) / s.limit)) + 1;
+        std::ostringstream msg;
+        msg << "under-resolved: Δt·ω_max = " << od << " at t = " << t0
+            << " exceeds the " << grid.op << " limit " << s.limit
+            << " (ω_max = " << od / s.dt << " from the spatial grid and the "
+            << "potential); use at least " << need << " time points";
+        s.message = msg.str();
+        s.seconds_total =
+            std::chrono::duration<double>(Clock::now() - start).count();
+        return s;
+      }
+    }
+    sbp::RegularizedOperator<double> dt(
+        sbp::MakeOperator<double>(grid.op, pts, t0, t1));
+    action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
+    if (pts != cached_size) {
+      s.factorizations += cache.factorizations;
+      cache = FieldFactorCache(options.newton.solver);
+      cached_size = pts;
+    }
+    // Start from φ₀ + (t − t0)·π₀.
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(sys.size());
+    for (int j = 0; j < s.nx; ++j)
+      for (int i = 0; i < pts; ++i)
+        for (int a = 0; a < m; ++a)
+          y[sys.Phi(i, j, a)] = phi[j * m + a] + s.dt * i * pi[j * m + a];
+    const auto r = FieldNewton(sys, y, options.newton, cache);
+    ++s.windows;
+    s.newton_iterations += r.iterations;
+    s.corrections += r.corrections;
+    s.residual_norm = std::max(s.residual_norm, r.residual_norm);
+    s.jacobian_nonzeros = r.jacobian_nonzeros;
+    s.seconds_assembly += r.seconds_assembly;
+    s.seconds_factor += r.seconds_factor;
+    s.seconds_solve += r.seconds_solve;
+    s.seconds_residual += r.seconds_residual;
+    if (!r.converged) {
+      std::ostringstream msg;
+      msg << "Newton did not converge in the window [" << t0 << ", " << t1
+          << "]: " << r.reason;
+      s.message = msg.str();
+      s.factorizations += cache.factorizations;
+      s.seconds_total =
+          std::chrono::duration<double>(Clock::now() - start).count();
+      return s;
+    }
+    keep(sys, y.data(), w == 0 ? 0 : 1, t0);
+    s.end = CorrectFieldEnd(sys, y.data());
+    if (w + 1 == sizes.size()) {
+      s.end_phi_node.resize(n);
+      for (int j = 0; j < s.nx; ++j)
+        for (int a = 0; a < m; ++a)
+          s.end_phi_node[j * m + a] = y[sys.Phi(int(pts) - 1, j, a)];
+      s.factor_nonzeros = cache.lu.FactorNonzeros();
+    }
+    phi = s.end.phi;
+    pi = s.end.phi_t;
+    t0 = t1;
+  }
+  s.factorizations += cache.factorizations;
+  s.converged = true;
+  s.message = "converged";
+  s.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  return s;
+}
+
+}  // namespace vivp::fields
