@@ -511,3 +511,105 @@ BOOST_AUTO_TEST_CASE(sine_gordon_breather_and_kink_match_exact) {
     BOOST_TEST(charge <= 1e-8);
   }
 }
+
+// The Courant-like limit (solvers/fields/resolution.h): Klein–Gordon with
+// only its fastest spatial mode excited is that mode's harmonic oscillator,
+// solved globally on 400 time points with the point-mechanics criterion
+// (tests/variational_resolution_test.cc): bounded (max|φ| < 1.5) at
+// Δt·ω_max = the operator's limit, unbounded 0.1 above it. The check
+// refuses the latter before solving and names the points needed.
+BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const auto dx = SpaceDerivative<double>::Periodic(2, 16, 0.0, kTwoPi);
+  std::vector<double> phi0(16), pi0(16, 0.0);
+  for (int j = 0; j < 16; ++j) phi0[j] = std::cos(4 * dx.x(j));
+  const double omega = fields::FastestFieldFrequency(kg, dx, phi0, pi0);
+  // The fastest mode of order-2 differences: sin θ/Δx at θ = π/2 (a period
+  // of four points, cos 4x here), ω² = that² + m².
+  BOOST_TEST(omega == std::sqrt(std::pow(1 / dx.dx(), 2) + 1.0),
+             boost::test_tools::tolerance(1e-12));
+  for (const char* op : {"sbp21", "sbp42"}) {
+    const double limit = variational::StabilityLimit(op);
+    for (double omega_dt : {limit, limit + 0.1}) {
+      const double t_end = 399 * omega_dt / omega;
+      fields::FieldSolveOptions options;
+      options.check_resolution = false;
+      auto s = fields::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0,
+                                  options);
+      BOOST_REQUIRE(s.converged);
+      double peak = 0;
+      for (double p : s.phi) peak = std::max(peak, std::abs(p));
+      BOOST_TEST_MESSAGE(op << " at Δt·ω_max = " << omega_dt
+                            << ": max|φ| = " << peak);
+      const bool within = omega_dt <= limit;
+      BOOST_TEST((peak < 1.5) == within);
+      options.check_resolution = true;
+      s = fields::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
+      BOOST_TEST(s.converged == within);
+      if (!within) {
+        BOOST_TEST_MESSAGE(s.message);
+        BOOST_TEST(s.message.find("under-resolved") != std::string::npos);
+        BOOST_TEST(s.message.find("use at least") != std::string::npos);
+        BOOST_TEST(s.phi.empty());
+      }
+    }
+  }
+}
+
+// Time-slab marching: windows of 16 points with the corrected hand-off keep
+// the global order; for the linear Klein–Gordon field every window has the
+// same Jacobian, so one factorization per window length serves the march
+// (the last, shorter window has its own).
+BOOST_AUTO_TEST_CASE(marching_keeps_the_order_and_reuses_the_factorization) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const fields::KleinGordonPlaneWave wave{kg, 1.0, 1.0};
+  const auto dx = SpaceDerivative<double>::Periodic(8, 64, 0.0, kTwoPi);
+  std::vector<double> h, err;
+  for (int nt : {65, 129, 257}) {
+    const auto s = Solve(kg, wave, dx, {"sbp42", nt, 2.0, 16});
+    h.push_back(2.0 / (nt - 1));
+    err.push_back(EndErrors(s, wave, dx, 2.0).second);
+    const long long lengths = (nt - 1) % 15 == 0 ? 1 : 2;
+    BOOST_TEST_MESSAGE("Nt = " << nt << ": " << s.windows << " windows, "
+                       << s.factorizations << " factorizations, corrected "
+                       "end error " << err.back());
+    BOOST_TEST(s.factorizations == lengths);
+    BOOST_TEST(s.t.size() == std::size_t(nt));
+  }
+  const double p = Slope(h, err);
+  BOOST_TEST_MESSAGE("march, windows of 16: fitted order " << p);
+  BOOST_TEST(p >= 3.7);
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_reason) {
+  const fields::SineGordon sg;
+  auto message = [](auto f) {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto has = [](const std::string& m, const char* what) {
+    BOOST_TEST_MESSAGE(m);
+    return m.find(what) != std::string::npos;
+  };
+  BOOST_TEST(has(message([] { SpaceDerivative<double>::Periodic(8, 5, 0, 1); }),
+                 "need at least 9 points"));
+  BOOST_TEST(has(message([] { SpaceDerivative<double>::Bounded("sbp42", 5, 0, 1); }),
+                 "sbp42 needs at least 8 points"));
+  const auto dx = SpaceDerivative<double>::Periodic(2, 8, 0.0, 1.0);
+  std::vector<double> ok(8, 0.0), short_(7, 0.0), nan(8, 0.0);
+  nan[3] = std::nan("");
+  BOOST_TEST(has(message([&] { fields::SolveField(sg, dx, {"sbp42", 5, 1.0, 0}, ok, ok); }),
+                 "sbp42 needs at least 8 time points, got 5"));
+  BOOST_TEST(has(message([&] { fields::SolveField(sg, dx, {"sbp42", 9, 0.0, 0}, ok, ok); }),
+                 "t_end must be positive"));
+  BOOST_TEST(has(message([&] { fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, short_, ok); }),
+                 "expected 8 values"));
+  BOOST_TEST(has(message([&] { fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, nan); }),
+                 "non-finite value at x = 0.375"));
+  BOOST_TEST(has(message([&] { fields::SolveField(sg, dx, {"sbp99", 9, 1.0, 0}, ok, ok); }),
+                 "unknown SBP operator 'sbp99'"));
+}
