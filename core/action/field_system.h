@@ -94,7 +94,8 @@ class FieldSystem {
     if (phi0.size() != n || pi0.size() != n)
       throw std::invalid_argument(
           "initial data: expected " + std::to_string(n) +
-          " values of φ and of φ_t (one per spatial point and component), got " +
+          " values of φ and of φ_t (one per spatial point and component), "
+          "got " +
           std::to_string(phi0.size()) + " and " + std::to_string(pi0.size()));
     phi0_ = std::move(phi0);
     pi0_ = std::move(pi0);
@@ -192,7 +193,8 @@ class FieldSystem {
               hx * y[Lambda4(j, a)] * last.coeffs[k] * D.inv_dt();
         f[InitialValueRow(j, a)] = y[Phi(0, j, a)] - phi0_[j * m + a];
         for (int i = 0; i < nt_; ++i) col[i] = y[Phi(i, j, a)];
-        f[InitialVelocityRow(j, a)] = D.ApplyRow(0, col.data()) - pi0_[j * m + a];
+        f[InitialVelocityRow(j, a)] =
+            D.ApplyRow(0, col.data()) - pi0_[j * m + a];
       }
     }
     auto& row = scratch_.row;
@@ -224,8 +226,8 @@ class FieldSystem {
     Local local[kMaxLocal];
     for (int i = 0; i < nt_; ++i)
       for (int j = 0; j < nx_; ++j) {
-        const Hessian h = D.NormWeight(i) * dx_.NormWeight(j) *
-                          PointHessian(v, i, j);
+        const Hessian h =
+            D.NormWeight(i) * dx_.NormWeight(j) * PointHessian(v, i, j);
         const int count = LocalEntries(i, j, local);
         for (int r = 0; r < count; ++r) {
           const auto& lr = local[r];
@@ -257,8 +259,8 @@ class FieldSystem {
         sink.Add(Phi(nt_ - 1, j, a), Lambda3(j, a), hx);
         for (std::size_t k = 0; k < last.coeffs.size(); ++k)
           if (last.coeffs[k] != Real(0))
-            sink.Add(Phi(last.first + static_cast<int>(k), j, a),
-                     Lambda4(j, a), hx * (last.coeffs[k] * D.inv_dt()));
+            sink.Add(Phi(last.first + static_cast<int>(k), j, a), Lambda4(j, a),
+                     hx * (last.coeffs[k] * D.inv_dt()));
         sink.Add(InitialValueRow(j, a), Phi(0, j, a), Real(1));
         for (std::size_t k = 0; k < first.coeffs.size(); ++k)
           if (first.coeffs[k] != Real(0))

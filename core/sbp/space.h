@@ -4,15 +4,17 @@
 // the periodic circle, diag(−1, 0, …, 0, 1) on the interval), which is all
 // the discrete action needs:
 //
-//   Σ_j H_j q_j (D u)_j = qᵀ H D u,   its variation in u is Dᵀ H q = B q − H D q,
+//   Σ_j H_j q_j (D u)_j = qᵀ H D u,   its variation in u is Dᵀ H q = B q − H D
+//   q,
 //
 // so the transpose is never stored. On the interval the boundary term B q
 // is the natural boundary condition of the discrete action: with
 // L = … − ½c²φ_x², q = −c²φ_x and the action is stationary only if φ_x = 0 at
-// both ends, imposed weakly (docs/fields.md, "Boundaries").
+// both ends, imposed weakly (docs/fields.md §2).
 //
 //   auto dx = vivp::sbp::SpaceDerivative<double>::Periodic(8, 64, 0.0, 2 * pi);
-//   auto dx = vivp::sbp::SpaceDerivative<double>::Bounded("sbp42", 81, -20, 20);
+//   auto dx = vivp::sbp::SpaceDerivative<double>::Bounded("sbp42", 81, -20,
+//   20);
 #pragma once
 
 #include <optional>

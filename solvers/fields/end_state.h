@@ -61,15 +61,12 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
     for (int step = 0; step < 4; ++step) {
       for (int a = 0; a < m; ++a) z[m + a] = u[a];
       const auto d = autodiff::Hessian<double, K>(
-          [&](const auto* w) {
-            return system.density()(w, w + m, w + 2 * m);
-          },
+          [&](const auto* w) { return system.density()(w, w + m, w + 2 * m); },
           z);
       const Vec r = momentum - d.gradient.template segment<m>(m);
-      const double scale = std::max(momentum.cwiseAbs().maxCoeff(),
-                                    d.gradient.template segment<m>(m)
-                                        .cwiseAbs()
-                                        .maxCoeff());
+      const double scale =
+          std::max(momentum.cwiseAbs().maxCoeff(),
+                   d.gradient.template segment<m>(m).cwiseAbs().maxCoeff());
       if (r.cwiseAbs().maxCoeff() <=
           16 * std::numeric_limits<double>::epsilon() * scale)
         break;
@@ -79,9 +76,8 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
       e.phi[j * m + a] = z[a];
       e.phi_t[j * m + a] = u[a];
       e.phi_estimate = std::max(e.phi_estimate, std::abs(shift[a]));
-      e.phi_t_estimate =
-          std::max(e.phi_t_estimate,
-                   std::abs(v.phi_t[system.At(nt - 1, j, a)] - u[a]));
+      e.phi_t_estimate = std::max(
+          e.phi_t_estimate, std::abs(v.phi_t[system.At(nt - 1, j, a)] - u[a]));
     }
   }
   return e;

@@ -49,7 +49,7 @@ struct FieldFactorCache {
   PatternedMatrix jacobian;
   SparseLu lu;
   int analyzed_pattern = 0;  // jacobian.patterns() when last analyzed
-  bool valid = false;     // lu holds a factorization usable as a start
+  bool valid = false;        // lu holds a factorization usable as a start
   long long factorizations = 0;
 };
 
@@ -85,16 +85,16 @@ FieldNewtonReport FieldNewton(const System& system, Eigen::VectorXd& y,
     return report;
   };
   if (y.size() != n) y = Eigen::VectorXd::Zero(n);
-  if (!residual()) return finish(false, "non-finite residual at the initial guess");
+  if (!residual())
+    return finish(false, "non-finite residual at the initial guess");
   bool stale = cache.valid;
   double previous = std::numeric_limits<double>::infinity();
   constexpr int kChordSteps = 8;
   while (report.iterations < options.max_iterations) {
     if (!cache.valid) {
       auto t0 = Clock::now();
-      cache.jacobian.Assemble(n, [&](auto& sink) {
-        system.Jacobian(y.data(), sink);
-      });
+      cache.jacobian.Assemble(
+          n, [&](auto& sink) { system.Jacobian(y.data(), sink); });
       report.seconds_assembly += since(t0);
       t0 = Clock::now();
       if (cache.analyzed_pattern != cache.jacobian.patterns()) {

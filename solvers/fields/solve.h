@@ -59,14 +59,14 @@ struct FieldSolution {
   bool converged = false;
   std::string message;
   int nx = 0, components = 0;
-  std::vector<double> t;                // the kept slices' times
-  std::vector<double> phi, phi_t;       // kept slices, (s·Nx + j)·m + a
-  FieldEnd end;                         // corrected state at t_end
-  std::vector<double> end_phi_node;     // φ at the last node, uncorrected
+  std::vector<double> t;                   // the kept slices' times
+  std::vector<double> phi, phi_t;          // kept slices, (s·Nx + j)·m + a
+  FieldEnd end;                            // corrected state at t_end
+  std::vector<double> end_phi_node;        // φ at the last node, uncorrected
   double dt = 0, omega_dt = 0, limit = 0;  // Δt·ω_max at the worst window
   int windows = 0, newton_iterations = 0, corrections = 0;
   long long factorizations = 0, jacobian_nonzeros = 0, factor_nonzeros = 0;
-  double residual_norm = 0;             // worst window's |F|∞
+  double residual_norm = 0;  // worst window's |F|∞
   double seconds_assembly = 0, seconds_factor = 0, seconds_solve = 0,
          seconds_residual = 0, seconds_total = 0;
 };
@@ -149,8 +149,9 @@ FieldSolution SolveField(const Density& density,
       const double od = s.dt * FastestFieldFrequency(density, dx, phi, pi);
       s.omega_dt = std::max(s.omega_dt, od);
       if (od > s.limit) {
-        const long long need = static_cast<long long>(
-            std::ceil(grid.t_end * (od / s.dt) / s.limit)) + 1;
+        const long long need = static_cast<long long>(std::ceil(
+                                   grid.t_end * (od / s.dt) / s.limit)) +
+                               1;
         std::ostringstream msg;
         msg << "under-resolved: Δt·ω_max = " << od << " at t = " << t0
             << " exceeds the " << grid.op << " limit " << s.limit

@@ -1,6 +1,6 @@
 // A sparse LU factorization of the space-time Jacobian, behind one small
 // interface so that the solver can be chosen by measurement
-// (docs/fields.md, "The linear solve"):
+// (docs/fields.md §3):
 //
 //   kUmfpack   UMFPACK (Davis 2004, SuiteSparse) with its default ordering,
 //              AMD on A + Aᵀ for these nearly symmetric patterns;

@@ -1,0 +1,229 @@
+// Cost of the space-time field solve (solvers/fields), two tables:
+//
+// 1. One Newton iteration over all Nt × Nx points of the sine-Gordon breather
+//    (order-8 periodic differences on [−20, 20), Δt = 0.01): residual,
+//    Jacobian assembly, sparse LU factorization and one solve, for the whole
+//    grid at once or window by window (each window factored afresh — the
+//    worst case; a march reuses factorizations). Peak memory per row from a
+//    child process. The growth in Nt and Nx is read off the rows.
+// 2. The breather marched to T = 100: max error against the exact solution,
+//    energy drift, windows, factorizations, time.
+//
+// Usage: fields_bench [--quick]   (--quick: the 2^18-point rows only)
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/action/field_charges.h"
+#include "core/action/field_system.h"
+#include "problems/fields/densities.h"
+#include "problems/fields/exact.h"
+#include "solvers/fields/solve.h"
+
+using namespace vivp;
+
+namespace {
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+      .count();
+}
+
+struct Row {
+  double residual = 0, assembly = 0, factor = 0, solve = 0;
+  long long jacobian_nnz = 0, factor_nnz = 0;
+  int windows = 0;
+};
+
+// One Newton iteration over nt × nx points in windows of w time points
+// (w = nt: the whole grid), the linearization at φ(t, x) = φ₀(x) + tπ₀(x).
+Row NewtonIteration(const char* op, int nt, int nx, int w,
+                    fields::SparseSolver solver) {
+  const fields::SineGordon sg;
+  const fields::SineGordonBreather breather{0.5};
+  const auto dx = sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
+  const double dt = 0.01;
+  std::vector<double> phi0(nx), pi0(nx);
+  for (int j = 0; j < nx; ++j) {
+    const double x = dx.x(j), h = 1e-6;
+    phi0[j] = breather(0.0, x);
+    pi0[j] = (breather(h, x) - breather(-h, x)) / (2 * h);
+  }
+  Row row;
+  fields::PatternedMatrix jac;
+  fields::SparseLu lu(solver);
+  int analyzed = 0;
+  for (int start = 0; start < nt - 1; start += w - 1) {
+    const int pts = std::min(w, nt - start);
+    if (pts < w && start > 0) break;  // equal windows only
+    const sbp::RegularizedOperator<double> op_t(
+        sbp::MakeOperator<double>(op, pts, start * dt, (start + pts - 1) * dt));
+    const action::FieldSystem<fields::SineGordon> sys(sg, op_t, dx, phi0, pi0);
+    Eigen::VectorXd y(sys.size()), f(sys.size()), delta(sys.size());
+    for (int j = 0; j < nx; ++j)
+      for (int i = 0; i < pts; ++i)
+        y[sys.Phi(i, j, 0)] = phi0[j] + dt * i * pi0[j];
+    auto t0 = std::chrono::steady_clock::now();
+    sys.Residual(y.data(), f.data());
+    row.residual += Since(t0);
+    t0 = std::chrono::steady_clock::now();
+    jac.Assemble(sys.size(), [&](auto& sink) { sys.Jacobian(y.data(), sink); });
+    row.assembly += Since(t0);
+    t0 = std::chrono::steady_clock::now();
+    if (analyzed != jac.patterns()) {
+      lu.Analyze(jac.matrix());
+      analyzed = jac.patterns();
+    }
+    if (!lu.Factorize(jac.matrix())) std::printf("singular!\n");
+    row.factor += Since(t0);
+    t0 = std::chrono::steady_clock::now();
+    lu.Solve(f, delta);
+    row.solve += Since(t0);
+    ++row.windows;
+    row.jacobian_nnz = jac.matrix().nonZeros();
+    if (row.windows == 1) row.factor_nnz = lu.FactorNonzeros();
+  }
+  return row;
+}
+
+// Runs f in a child process and returns its peak resident memory in MB
+// (the parent's own peak would carry over from row to row).
+template <class F>
+double InChild(F&& f) {
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    f();
+    std::fflush(stdout);
+    _exit(0);
+  }
+  int status = 0;
+  struct rusage usage {};
+  wait4(pid, &status, 0, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+void Table1(bool quick) {
+  std::printf(
+      "One Newton iteration, sine-Gordon breather, order-8 periodic space,\n"
+      "every window factored afresh (seconds; nnz of the Jacobian and of one\n"
+      "window's L+U; peak RSS of the run)\n\n");
+  std::printf(
+      "| time op | solver | Nt × Nx | window | windows | residual | "
+      "assembly | factor | solve | total | J nnz | LU nnz | peak MB |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  struct Config {
+    const char* op;
+    int nt, nx, w;
+    fields::SparseSolver solver;
+  };
+  using S = fields::SparseSolver;
+  std::vector<Config> configs = {
+      {"sbp21", 512, 512, 512, S::kUmfpack},
+      {"sbp42", 512, 512, 8, S::kUmfpack},
+      {"sbp42", 512, 512, 16, S::kUmfpack},
+  };
+  if (!quick) {
+    const std::vector<Config> more = {
+        {"sbp42", 512, 512, 8, S::kEigen},
+        {"sbp42", 512, 512, 16, S::kEigen},
+        {"sbp21", 128, 512, 128, S::kUmfpack},
+        {"sbp21", 256, 512, 256, S::kUmfpack},
+        {"sbp21", 1024, 512, 1024, S::kUmfpack},
+        {"sbp21", 512, 128, 512, S::kUmfpack},
+        {"sbp21", 512, 256, 512, S::kUmfpack},
+        {"sbp21", 512, 1024, 512, S::kUmfpack},
+        {"sbp42", 128, 512, 8, S::kUmfpack},
+        {"sbp42", 256, 512, 8, S::kUmfpack},
+        {"sbp42", 1024, 512, 8, S::kUmfpack},
+        {"sbp42", 512, 128, 8, S::kUmfpack},
+        {"sbp42", 512, 256, 8, S::kUmfpack},
+        {"sbp42", 512, 1024, 8, S::kUmfpack},
+        {"sbp42", 64, 64, 64, S::kUmfpack},
+        {"sbp42", 128, 128, 128, S::kUmfpack},
+    };
+    configs.insert(configs.end(), more.begin(), more.end());
+  }
+  for (const Config& c : configs) {
+    const double mb = InChild([&] {
+      const Row r = NewtonIteration(c.op, c.nt, c.nx, c.w, c.solver);
+      const double total = r.residual + r.assembly + r.factor + r.solve;
+      std::printf(
+          "| %s | %s | %d × %d | %s | %d | %.3f | %.3f | %.3f | %.3f "
+          "| **%.2f** | %lld | %lld |",
+          c.op, std::string(fields::SparseSolverName(c.solver)).c_str(), c.nt,
+          c.nx, c.w == c.nt ? "global" : std::to_string(c.w).c_str(), r.windows,
+          r.residual, r.assembly, r.factor, r.solve, total, r.jacobian_nnz,
+          r.factor_nnz);
+    });
+    std::printf(" %.0f |\n", mb);
+  }
+}
+
+void Table2() {
+  std::printf(
+      "\nThe breather (ω = 0.5) marched to T = 100 on [−20, 20), order-8\n"
+      "periodic space, SBP42 in time, windows of 16; max error against the\n"
+      "exact solution up to t = 50 and up to t = 100, energy drift\n\n"
+      "| Δt | Nx | time points | error t ≤ 50 | error t ≤ 100 | max |φ| | "
+      "energy drift | windows | factorizations | seconds | peak MB |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  struct Config {
+    int nt, nx;
+  };
+  for (const Config c :
+       {Config{5001, 200}, Config{10001, 200}, Config{5001, 400}}) {
+    const double mb = InChild([&] {
+      const int nx = c.nx;
+      const fields::SineGordon sg;
+      const fields::SineGordonBreather breather{0.5};
+      const auto dx =
+          sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
+      std::vector<double> phi0(nx), pi0(nx);
+      for (int j = 0; j < nx; ++j) {
+        const double x = dx.x(j), h = 1e-6;
+        phi0[j] = breather(0.0, x);
+        pi0[j] = (breather(h, x) - breather(-h, x)) / (2 * h);
+      }
+      const double e0 = action::ChargesOfSlice(sg, dx, phi0, pi0).energy;
+      const auto s =
+          fields::SolveField(sg, dx, {"sbp42", c.nt, 100.0, 16}, phi0, pi0);
+      double err50 = 0, err = 0, drift = 0, peak = 0;
+      for (std::size_t k = 0; k < s.t.size(); ++k) {
+        for (int j = 0; j < nx; ++j) {
+          const double e =
+              std::abs(s.phi[k * nx + j] - breather(s.t[k], dx.x(j)));
+          err = std::max(err, e);
+          if (s.t[k] <= 50) err50 = std::max(err50, e);
+          peak = std::max(peak, std::abs(s.phi[k * nx + j]));
+        }
+        const std::span<const double> p(s.phi.data() + k * nx, nx);
+        const std::span<const double> q(s.phi_t.data() + k * nx, nx);
+        drift = std::max(
+            drift, std::abs(action::ChargesOfSlice(sg, dx, p, q).energy - e0));
+      }
+      std::printf(
+          "| %.3g | %d | %d | %.2e | %.2e | %.3f | %.2e | %d | %lld | "
+          "%.1f |",
+          100.0 / (c.nt - 1), nx, c.nt, err50, err, peak, drift, s.windows,
+          s.factorizations, s.seconds_total);
+      if (!s.converged) std::printf(" %s |", s.message.c_str());
+    });
+    std::printf(" %.0f |\n", mb);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  Table1(quick);
+  if (!quick) Table2();
+}

@@ -1,0 +1,80 @@
+// What the field tests share: initial data of an exact solution, a checked
+// solve, errors against the exact solution and fitted slopes.
+#pragma once
+
+#include <ceres/jet.h>
+
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+#include "core/linalg/fit.h"
+#include "core/sbp/space.h"
+#include "solvers/fields/solve.h"
+
+namespace fields_test {
+
+using vivp::sbp::SpaceDerivative;
+namespace fields = vivp::fields;
+namespace linalg = vivp::linalg;
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+// φ(0, x_j) and φ_t(0, x_j) of an exact solution u(t, x), by a Jet in t.
+template <class U>
+std::pair<std::vector<double>, std::vector<double>> InitialOf(
+    const U& u, const SpaceDerivative<double>& dx) {
+  using J = ceres::Jet<double, 1>;
+  std::vector<double> phi(dx.points()), pi(dx.points());
+  for (int j = 0; j < dx.points(); ++j) {
+    const J v = u(J(0.0, 0), J(dx.x(j)));
+    phi[j] = v.a;
+    pi[j] = v.v[0];
+  }
+  return {phi, pi};
+}
+
+template <class U>
+fields::FieldSolution Solve(const auto& density, const U& u,
+                            const SpaceDerivative<double>& dx,
+                            fields::FieldGrid grid) {
+  auto [phi, pi] = InitialOf(u, dx);
+  auto s = fields::SolveField(density, dx, grid, phi, pi);
+  BOOST_REQUIRE_MESSAGE(s.converged, s.message);
+  return s;
+}
+
+// max_j |φ(T, x_j) − u(T, x_j)| of the last node and of the corrected end.
+template <class U>
+std::pair<double, double> EndErrors(const fields::FieldSolution& s, const U& u,
+                                    const SpaceDerivative<double>& dx,
+                                    double t_end) {
+  double node = 0, corrected = 0;
+  for (int j = 0; j < dx.points(); ++j) {
+    const double exact = u(t_end, dx.x(j));
+    node = std::max(node, std::abs(s.end_phi_node[j] - exact));
+    corrected = std::max(corrected, std::abs(s.end.phi[j] - exact));
+  }
+  return {node, corrected};
+}
+
+// max over every kept slice and point of |φ − u|.
+template <class U>
+double MaxError(const fields::FieldSolution& s, const U& u,
+                const SpaceDerivative<double>& dx) {
+  double e = 0;
+  for (std::size_t k = 0; k < s.t.size(); ++k)
+    for (int j = 0; j < dx.points(); ++j)
+      e = std::max(e,
+                   std::abs(s.phi[k * dx.points() + j] - u(s.t[k], dx.x(j))));
+  return e;
+}
+
+inline double Slope(const std::vector<double>& h,
+                    const std::vector<double>& e) {
+  return linalg::FitPowerLaw(h, e).order;
+}
+
+}  // namespace fields_test

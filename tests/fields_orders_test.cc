@@ -1,0 +1,272 @@
+// Fields solved from their action (solvers/fields), accuracy and
+// robustness: fitted orders in Δt and Δx, the sine-Gordon breather and kink
+// against their exact solutions, marching, the resolution check and bad
+// input.
+#define BOOST_TEST_MODULE fields_orders
+#include <ceres/jet.h>
+
+#include <Eigen/Dense>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <numbers>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/action/field_charges.h"
+#include "core/action/field_system.h"
+#include "problems/fields/densities.h"
+#include "problems/fields/exact.h"
+#include "solvers/fields/solve.h"
+#include "tests/fields_helpers.h"
+
+using namespace vivp;
+using namespace fields_test;
+
+// Klein–Gordon plane wave (m = 1, k = 1) on [0, 2π), order-8 periodic
+// differences on 64 points, T = 1: the error at t = T against Δt. The
+// point-mechanics orders of the operators are 2 (SBP21) and 3 (SBP42) for
+// the last node, and the corrected end state gains an order where the
+// operator allows (docs/method.md §7).
+BOOST_AUTO_TEST_CASE(klein_gordon_orders_in_time) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const fields::KleinGordonPlaneWave wave{kg, 1.0, 1.0};
+  const auto dx = SpaceDerivative<double>::Periodic(8, 64, 0.0, kTwoPi);
+  struct Expect {
+    const char* op;
+    double node, corrected;
+  };
+  for (const Expect e :
+       {Expect{"sbp21", 2.0, 2.0}, Expect{"sbp42", 3.0, 4.0}}) {
+    std::vector<double> h, node, corrected;
+    for (int nt : {33, 65, 129, 257}) {
+      const auto s = Solve(kg, wave, dx, {e.op, nt, 1.0, 0});
+      const auto [en, ec] = EndErrors(s, wave, dx, 1.0);
+      h.push_back(1.0 / (nt - 1));
+      node.push_back(en);
+      corrected.push_back(ec);
+      BOOST_TEST_MESSAGE(e.op << " Nt = " << nt << ": |φ_N − φ| = " << en
+                              << ", corrected " << ec);
+    }
+    const double pn = Slope(h, node), pc = Slope(h, corrected);
+    BOOST_TEST_MESSAGE(e.op << ": fitted order " << pn << " (node), " << pc
+                            << " (corrected)");
+    BOOST_TEST(std::abs(pn - e.node) <= 0.2);
+    BOOST_TEST(pc >= e.corrected - 0.2);
+  }
+}
+
+// At fixed fine Δt (SBP42, 257 points, corrected end state: 4e-11 of time
+// error), the error at t = 1 against Δx. For periodic differences of order
+// 2q the plane wave's error is its phase error, of order 2q.
+BOOST_AUTO_TEST_CASE(klein_gordon_orders_in_space) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const fields::KleinGordonPlaneWave wave{kg, 1.0, 1.0};
+  for (int order : {2, 4, 6, 8}) {
+    std::vector<double> h, err;
+    for (int nx : {12, 16, 20, 24}) {
+      const auto dx = SpaceDerivative<double>::Periodic(order, nx, 0.0, kTwoPi);
+      const auto s = Solve(kg, wave, dx, {"sbp42", 257, 1.0, 0});
+      h.push_back(dx.dx());
+      err.push_back(EndErrors(s, wave, dx, 1.0).second);
+    }
+    const double p = Slope(h, err);
+    BOOST_TEST_MESSAGE("periodic order " << order << ": fitted " << p
+                                         << " (error " << err.back()
+                                         << " at 24 points)");
+    BOOST_TEST(p >= order - 0.3);
+    BOOST_TEST(p <= order + 1.0);
+  }
+}
+
+// On a bounded interval the SBP operators in space, with the natural
+// boundary condition φ_x = 0 of the discrete action (core/sbp/space.h): the
+// standing wave cos x·cos ωt on [0, π] satisfies it. Reported, with the
+// floor p + 1 − 0.3 for SBP(2p, p): the boundary closure's order p gains
+// one in the solution of a problem second order in space (measured: 1.85,
+// 3.98, 4.30).
+BOOST_AUTO_TEST_CASE(bounded_space_orders_are_reported) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const double omega = std::sqrt(2.0);
+  const auto standing = [&](auto t, auto x) {
+    using std::cos;
+    return cos(x) * cos(decltype(t)(omega) * t);
+  };
+  struct Expect {
+    const char* op;
+    double floor;
+  };
+  for (const Expect e :
+       {Expect{"sbp21", 1.7}, Expect{"sbp42", 2.7}, Expect{"sbp63", 3.7}}) {
+    std::vector<double> h, err;
+    for (int nx : {21, 31, 41, 61}) {
+      const auto dx =
+          SpaceDerivative<double>::Bounded(e.op, nx, 0.0, std::numbers::pi);
+      const auto s = Solve(kg, standing, dx, {"sbp42", 257, 1.0, 0});
+      h.push_back(dx.dx());
+      err.push_back(EndErrors(s, standing, dx, 1.0).second);
+    }
+    const double p = Slope(h, err);
+    BOOST_TEST_MESSAGE(e.op << " in space: fitted order " << p << " (error "
+                            << err.back() << " at 61 points)");
+    BOOST_TEST(p >= e.floor);
+  }
+}
+
+// Sine-Gordon on [−20, 20] to T = 2 against the exact solutions: the
+// breather (ω = 0.5) with order-8 periodic differences on 200 points, the
+// moving kink (v = 0.5) on the interval with SBP63 in space on 301 points
+// (its tails are 1e-10 from the vacua, so the natural boundary condition is
+// met to that level); SBP42 in time, 101 points, marched in windows of 16.
+// The kink's topological charge (φ(20) − φ(−20))/2π is 1 at every slice, to
+// the exact solution's own tail deficit.
+BOOST_AUTO_TEST_CASE(sine_gordon_breather_and_kink_match_exact) {
+  const fields::SineGordon sg;
+  const fields::FieldGrid grid{"sbp42", 101, 2.0, 16};
+  {
+    const fields::SineGordonBreather breather{0.5};
+    const auto dx = SpaceDerivative<double>::Periodic(8, 200, -20.0, 40.0);
+    const auto s = Solve(sg, breather, dx, grid);
+    const double e = MaxError(s, breather, dx);
+    BOOST_TEST_MESSAGE("breather: max error "
+                       << e << " over " << s.t.size() << " slices, "
+                       << s.windows << " windows, " << s.factorizations
+                       << " factorizations");
+    BOOST_TEST(e <= 1e-4);
+  }
+  {
+    const fields::SineGordonKink kink{0.5, 0.0};
+    const auto dx = SpaceDerivative<double>::Bounded("sbp63", 301, -20.0, 20.0);
+    const auto s = Solve(sg, kink, dx, grid);
+    const double e = MaxError(s, kink, dx);
+    double charge = 0;
+    for (std::size_t k = 0; k < s.t.size(); ++k) {
+      const double q = (s.phi[k * 301 + 300] - s.phi[k * 301]) / kTwoPi;
+      const double exact = (kink(s.t[k], 20.0) - kink(s.t[k], -20.0)) / kTwoPi;
+      BOOST_TEST(std::lround(q) == 1);
+      charge = std::max(charge, std::abs(q - exact));
+    }
+    BOOST_TEST_MESSAGE("kink: max error " << e
+                                          << ", charge off the exact "
+                                             "solution's by at most "
+                                          << charge);
+    BOOST_TEST(e <= 1e-4);
+    BOOST_TEST(charge <= 1e-8);
+  }
+}
+
+// The Courant-like limit (solvers/fields/resolution.h): Klein–Gordon with
+// only its fastest spatial mode excited is that mode's harmonic oscillator,
+// solved globally on 400 time points with the point-mechanics criterion
+// (tests/variational_resolution_test.cc): bounded (max|φ| < 1.5) at
+// Δt·ω_max = the operator's limit, unbounded 0.1 above it. The check
+// refuses the latter before solving and names the points needed.
+BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const auto dx = SpaceDerivative<double>::Periodic(2, 16, 0.0, kTwoPi);
+  std::vector<double> phi0(16), pi0(16, 0.0);
+  for (int j = 0; j < 16; ++j) phi0[j] = std::cos(4 * dx.x(j));
+  const double omega = fields::FastestFieldFrequency(kg, dx, phi0, pi0);
+  // The fastest mode of order-2 differences: sin θ/Δx at θ = π/2 (a period
+  // of four points, cos 4x here), ω² = that² + m².
+  BOOST_TEST(omega == std::sqrt(std::pow(1 / dx.dx(), 2) + 1.0),
+             boost::test_tools::tolerance(1e-12));
+  for (const char* op : {"sbp21", "sbp42"}) {
+    const double limit = variational::StabilityLimit(op);
+    for (double omega_dt : {limit, limit + 0.1}) {
+      const double t_end = 399 * omega_dt / omega;
+      fields::FieldSolveOptions options;
+      options.check_resolution = false;
+      auto s =
+          fields::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
+      BOOST_REQUIRE(s.converged);
+      double peak = 0;
+      for (double p : s.phi) peak = std::max(peak, std::abs(p));
+      BOOST_TEST_MESSAGE(op << " at Δt·ω_max = " << omega_dt
+                            << ": max|φ| = " << peak);
+      const bool within = omega_dt <= limit;
+      BOOST_TEST((peak < 1.5) == within);
+      options.check_resolution = true;
+      s = fields::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
+      BOOST_TEST(s.converged == within);
+      if (!within) {
+        BOOST_TEST_MESSAGE(s.message);
+        BOOST_TEST(s.message.find("under-resolved") != std::string::npos);
+        BOOST_TEST(s.message.find("use at least") != std::string::npos);
+        BOOST_TEST(s.phi.empty());
+      }
+    }
+  }
+}
+
+// Time-slab marching: windows of 16 points with the corrected hand-off keep
+// the global order; for the linear Klein–Gordon field every window has the
+// same Jacobian, so one factorization per window length serves the march
+// (the last, shorter window has its own).
+BOOST_AUTO_TEST_CASE(marching_keeps_the_order_and_reuses_the_factorization) {
+  const fields::KleinGordon kg{1.0, 1.0};
+  const fields::KleinGordonPlaneWave wave{kg, 1.0, 1.0};
+  const auto dx = SpaceDerivative<double>::Periodic(8, 64, 0.0, kTwoPi);
+  std::vector<double> h, err;
+  for (int nt : {65, 129, 257}) {
+    const auto s = Solve(kg, wave, dx, {"sbp42", nt, 2.0, 16});
+    h.push_back(2.0 / (nt - 1));
+    err.push_back(EndErrors(s, wave, dx, 2.0).second);
+    const long long lengths = (nt - 1) % 15 == 0 ? 1 : 2;
+    BOOST_TEST_MESSAGE("Nt = " << nt << ": " << s.windows << " windows, "
+                               << s.factorizations
+                               << " factorizations, corrected "
+                                  "end error "
+                               << err.back());
+    BOOST_TEST(s.factorizations == lengths);
+    BOOST_TEST(s.t.size() == std::size_t(nt));
+  }
+  const double p = Slope(h, err);
+  BOOST_TEST_MESSAGE("march, windows of 16: fitted order " << p);
+  BOOST_TEST(p >= 3.7);
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_reason) {
+  const fields::SineGordon sg;
+  auto message = [](auto f) {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto has = [](const std::string& m, const char* what) {
+    BOOST_TEST_MESSAGE(m);
+    return m.find(what) != std::string::npos;
+  };
+  BOOST_TEST(has(message([] { SpaceDerivative<double>::Periodic(8, 5, 0, 1); }),
+                 "need at least 9 points"));
+  BOOST_TEST(
+      has(message([] { SpaceDerivative<double>::Bounded("sbp42", 5, 0, 1); }),
+          "sbp42 needs at least 8 points"));
+  const auto dx = SpaceDerivative<double>::Periodic(2, 8, 0.0, 1.0);
+  std::vector<double> ok(8, 0.0), short_(7, 0.0), nan(8, 0.0);
+  nan[3] = std::nan("");
+  BOOST_TEST(has(message([&] {
+                   fields::SolveField(sg, dx, {"sbp42", 5, 1.0, 0}, ok, ok);
+                 }),
+                 "sbp42 needs at least 8 time points, got 5"));
+  BOOST_TEST(has(message([&] {
+                   fields::SolveField(sg, dx, {"sbp42", 9, 0.0, 0}, ok, ok);
+                 }),
+                 "t_end must be positive"));
+  BOOST_TEST(has(message([&] {
+                   fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, short_, ok);
+                 }),
+                 "expected 8 values"));
+  BOOST_TEST(has(message([&] {
+                   fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, nan);
+                 }),
+                 "non-finite value at x = 0.375"));
+  BOOST_TEST(has(message([&] {
+                   fields::SolveField(sg, dx, {"sbp99", 9, 1.0, 0}, ok, ok);
+                 }),
+                 "unknown SBP operator 'sbp99'"));
+}
