@@ -50,12 +50,7 @@ Row NewtonIteration(const char* op, int nt, int nx, int w,
   const fields::SineGordonBreather breather{0.5};
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
   const double dt = 0.01;
-  std::vector<double> phi0(nx), pi0(nx);
-  for (int j = 0; j < nx; ++j) {
-    const double x = dx.x(j), h = 1e-6;
-    phi0[j] = breather(0.0, x);
-    pi0[j] = (breather(h, x) - breather(-h, x)) / (2 * h);
-  }
+  const auto [phi0, pi0] = fields::InitialData(breather, dx);
   Row row;
   fields::PatternedMatrix jac;
   fields::SparseLu lu(solver);
@@ -186,12 +181,7 @@ void Table2() {
       const fields::SineGordonBreather breather{0.5};
       const auto dx =
           sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
-      std::vector<double> phi0(nx), pi0(nx);
-      for (int j = 0; j < nx; ++j) {
-        const double x = dx.x(j), h = 1e-6;
-        phi0[j] = breather(0.0, x);
-        pi0[j] = (breather(h, x) - breather(-h, x)) / (2 * h);
-      }
+      const auto [phi0, pi0] = fields::InitialData(breather, dx);
       const double e0 = action::ChargesOfSlice(sg, dx, phi0, pi0).energy;
       const auto s =
           fields::SolveField(sg, dx, {"sbp42", c.nt, 100.0, 16}, phi0, pi0);

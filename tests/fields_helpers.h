@@ -2,8 +2,6 @@
 // solve, errors against the exact solution and fitted slopes.
 #pragma once
 
-#include <ceres/jet.h>
-
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <numbers>
@@ -12,6 +10,7 @@
 
 #include "core/linalg/fit.h"
 #include "core/sbp/space.h"
+#include "problems/fields/exact.h"
 #include "solvers/fields/solve.h"
 
 namespace fields_test {
@@ -22,25 +21,11 @@ namespace linalg = vivp::linalg;
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-// φ(0, x_j) and φ_t(0, x_j) of an exact solution u(t, x), by a Jet in t.
-template <class U>
-std::pair<std::vector<double>, std::vector<double>> InitialOf(
-    const U& u, const SpaceDerivative<double>& dx) {
-  using J = ceres::Jet<double, 1>;
-  std::vector<double> phi(dx.points()), pi(dx.points());
-  for (int j = 0; j < dx.points(); ++j) {
-    const J v = u(J(0.0, 0), J(dx.x(j)));
-    phi[j] = v.a;
-    pi[j] = v.v[0];
-  }
-  return {phi, pi};
-}
-
 template <class U>
 fields::FieldSolution Solve(const auto& density, const U& u,
                             const SpaceDerivative<double>& dx,
                             fields::FieldGrid grid) {
-  auto [phi, pi] = InitialOf(u, dx);
+  auto [phi, pi] = fields::InitialData(u, dx);
   auto s = fields::SolveField(density, dx, grid, phi, pi);
   BOOST_REQUIRE_MESSAGE(s.converged, s.message);
   return s;

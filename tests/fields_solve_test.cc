@@ -296,7 +296,7 @@ template <class Density, class U>
 void CheckEnergy(const char* name, const Density& density, const U& u,
                  const SpaceDerivative<double>& dx) {
   const int nx = dx.points();
-  const auto [phi0, pi0] = InitialOf(u, dx);
+  const auto [phi0, pi0] = fields::InitialData(u, dx);
   const double e0 = action::ChargesOfSlice(density, dx, phi0, pi0).energy;
   struct Expect {
     const char* op;

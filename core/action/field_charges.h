@@ -31,12 +31,8 @@ FieldCharges ChargesOfSlice(const Density& density,
                             std::span<const double> phi_t) {
   constexpr int m = Density::kComponents;
   const int n = dx.points();
-  std::vector<double> comp(n), dcomp(n), phi_x(phi.size());
-  for (int a = 0; a < m; ++a) {
-    for (int j = 0; j < n; ++j) comp[j] = phi[j * m + a];
-    dx.Apply<double>(comp, dcomp);
-    for (int j = 0; j < n; ++j) phi_x[j * m + a] = dcomp[j];
-  }
+  std::vector<double> phi_x(phi.size());
+  dx.ApplyComponents(m, phi, phi_x);
   FieldCharges q;
   for (int j = 0; j < n; ++j) {
     double z[3 * m];

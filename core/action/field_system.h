@@ -39,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "core/action/local_map.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
 #include "core/sbp/space.h"
@@ -146,11 +147,6 @@ class FieldSystem {
     Real z[K];
     Point(v, i, j, z);
     return autodiff::Hessian<Real, K>(Call(), z).hessian;
-  }
-  Real PointValue(const FieldValues<Real>& v, int i, int j) const {
-    Real z[K];
-    Point(v, i, j, z);
-    return density_(z, z + m, z + 2 * m);
   }
 
   void Residual(const Real* y, Real* f) const {
@@ -282,19 +278,18 @@ class FieldSystem {
   // 1 + the widest row of D̄_t (SBP84: 12) + the widest row of D_x.
   static constexpr int kMaxLocal = 32;
 
+  // The time neighbours are those of point mechanics (local_map.h: row i of
+  // D̄ including the penalty, the node itself first or among them).
   int LocalEntries(int i, int j, Local* out) const {
-    int count = 0;
-    out[count++] = {i, j, 0, {Real(1), Real(0), Real(0)}};
-    const auto& D = dt_.base();
-    const auto row = D.row(i);
-    for (std::size_t k = 0; k < row.coeffs.size(); ++k) {
-      const int node = row.first + static_cast<int>(k);
-      Real w = row.coeffs[k] * D.inv_dt();
-      if (i == 0 && node == 0) w += dt_.penalty();
-      if (node == i)
-        out[0].w[1] = w;
-      else if (w != Real(0))
-        out[count++] = {node, j, 1, {Real(0), w, Real(0)}};
+    int count = 1;
+    out[0] = {i, j, 0, {Real(1), Real(0), Real(0)}};
+    const LocalMap<Real> time = MakeLocalMap(dt_, i);
+    for (int e = 0; e < time.size; ++e) {
+      const auto& t = time.entries[e];
+      if (t.node == i)
+        out[0].w[1] = t.wv;
+      else
+        out[count++] = {t.node, j, 1, {Real(0), t.wv, Real(0)}};
     }
     dx_.ForRow(j, [&](int l, Real w) {
       if (l == j)

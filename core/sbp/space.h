@@ -37,7 +37,6 @@ class SpaceDerivative {
     SpaceDerivative s;
     s.periodic_.emplace(order, points, length);
     s.x0_ = x0;
-    s.length_ = length;
     return s;
   }
   // n points on [x0, x1] including both ends, Δx = (x1 − x0)/(n − 1).
@@ -46,7 +45,6 @@ class SpaceDerivative {
     SpaceDerivative s;
     s.bounded_.emplace(MakeOperator<Real>(name, points, x0, x1));
     s.x0_ = x0;
-    s.length_ = x1 - x0;
     return s;
   }
 
@@ -63,14 +61,10 @@ class SpaceDerivative {
                      : std::string(bounded_->name());
   }
   Real x0() const { return x0_; }
-  Real length() const { return length_; }
   Real dx() const { return periodic_ ? periodic_->dx() : bounded_->dt(); }
   Real x(int j) const { return x0_ + dx() * static_cast<Real>(j); }
   Real NormWeight(int j) const {
     return periodic_ ? periodic_->NormWeight() : bounded_->NormWeight(j);
-  }
-  const Operator<Real>* bounded() const {
-    return bounded_ ? &*bounded_ : nullptr;
   }
   const PeriodicOperator<Real>* periodic_operator() const {
     return periodic_ ? &*periodic_ : nullptr;
@@ -83,6 +77,19 @@ class SpaceDerivative {
       periodic_->Apply(u, out);
     else
       bounded_->Apply(u, out);
+  }
+
+  // The derivative of a slice of m interleaved components (value j·m + a),
+  // each on its own.
+  void ApplyComponents(int m, std::span<const Real> u,
+                       std::span<Real> out) const {
+    const int n = points();
+    std::vector<Real> comp(n), dcomp(n);
+    for (int a = 0; a < m; ++a) {
+      for (int j = 0; j < n; ++j) comp[j] = u[j * m + a];
+      Apply<Real>(comp, dcomp);
+      for (int j = 0; j < n; ++j) out[j * m + a] = dcomp[j];
+    }
   }
 
   // out_j += (Dᵀ H q)_j = (B q)_j − H_j (D q)_j, the variation of Σ H q D u;
@@ -122,7 +129,7 @@ class SpaceDerivative {
   SpaceDerivative() = default;
   std::optional<PeriodicOperator<Real>> periodic_;
   std::optional<Operator<Real>> bounded_;
-  Real x0_ = 0, length_ = 0;
+  Real x0_ = 0;
 };
 
 }  // namespace vivp::sbp

@@ -15,10 +15,15 @@
 // φ_t(0, x) = 0, with the Gaussian f = exp(−x²/(2σ²)).
 #pragma once
 
+#include <ceres/jet.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "core/sbp/space.h"
 #include "problems/fields/densities.h"
 
 namespace vivp::fields {
@@ -123,5 +128,20 @@ struct WaveGaussian {
     return T(0.5) * (exp(-T(s) * a * a) + exp(-T(s) * b * b));
   }
 };
+
+// φ(0, x_j) and φ_t(0, x_j) of an exact solution u(t, x) on the grid of dx
+// (one component), φ_t by a Jet in t: the initial data of a solve.
+template <class U>
+std::pair<std::vector<double>, std::vector<double>> InitialData(
+    const U& u, const sbp::SpaceDerivative<double>& dx) {
+  using J = ceres::Jet<double, 1>;
+  std::vector<double> phi(dx.points()), pi(dx.points());
+  for (int j = 0; j < dx.points(); ++j) {
+    const J v = u(J(0.0, 0), J(dx.x(j)));
+    phi[j] = v.a;
+    pi[j] = v.v[0];
+  }
+  return {phi, pi};
+}
 
 }  // namespace vivp::fields

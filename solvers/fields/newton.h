@@ -50,7 +50,6 @@ struct FieldFactorCache {
   SparseLu lu;
   int analyzed_pattern = 0;  // jacobian.patterns() when last analyzed
   bool valid = false;        // lu holds a factorization usable as a start
-  long long factorizations = 0;
 };
 
 template <class System>
@@ -104,7 +103,6 @@ FieldNewtonReport FieldNewton(const System& system, Eigen::VectorXd& y,
       const bool ok = cache.lu.Factorize(cache.jacobian.matrix());
       report.seconds_factor += since(t0);
       ++report.iterations;
-      ++cache.factorizations;
       if (!ok)
         return finish(false, "singular Jacobian at iteration " +
                                  std::to_string(report.iterations) + ": " +

@@ -25,9 +25,11 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,8 +66,9 @@ struct FieldSolution {
   FieldEnd end;                            // corrected state at t_end
   std::vector<double> end_phi_node;        // φ at the last node, uncorrected
   double dt = 0, omega_dt = 0, limit = 0;  // Δt·ω_max at the worst window
-  int windows = 0, newton_iterations = 0, corrections = 0;
-  long long factorizations = 0, jacobian_nonzeros = 0, factor_nonzeros = 0;
+  int windows = 0, corrections = 0;
+  long long factorizations = 0;  // Newton iterations: one each
+  long long jacobian_nonzeros = 0;
   double residual_norm = 0;  // worst window's |F|∞
   double seconds_assembly = 0, seconds_factor = 0, seconds_solve = 0,
          seconds_residual = 0, seconds_total = 0;
@@ -129,11 +132,11 @@ FieldSolution SolveField(const Density& density,
   long long cached_size = -1;
   double t0 = 0;
   std::vector<double> phi = std::move(phi0), pi = std::move(pi0);
-  auto keep = [&](const action::FieldSystem<Density>& sys, const double* y,
-                  int first, double t_start) {
+  const double rho = SpectralRadius(dx);
+  action::FieldValues<double> v;  // the accepted window's fields
+  auto keep = [&](const action::FieldSystem<Density>& sys, int first,
+                  double t_start) {
     if (!options.keep_field) return;
-    action::FieldValues<double> v;
-    sys.Fields(y, v);
     for (int i = first; i < sys.time_points(); ++i) {
       s.t.push_back(t_start + s.dt * i);
       const auto b = v.phi.begin() + sys.At(i, 0, 0);
@@ -146,7 +149,7 @@ FieldSolution SolveField(const Density& density,
     const long long pts = sizes[w];
     const double t1 = t0 + s.dt * double(pts - 1);
     if (options.check_resolution) {
-      const double od = s.dt * FastestFieldFrequency(density, dx, phi, pi);
+      const double od = s.dt * FastestFieldFrequency(density, dx, rho, phi, pi);
       s.omega_dt = std::max(s.omega_dt, od);
       if (od > s.limit) {
         const long long need = static_cast<long long>(std::ceil(
@@ -167,7 +170,6 @@ FieldSolution SolveField(const Density& density,
         sbp::MakeOperator<double>(grid.op, pts, t0, t1));
     action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
     if (pts != cached_size) {
-      s.factorizations += cache.factorizations;
       cache = FieldFactorCache(options.newton.solver);
       cached_size = pts;
     }
@@ -179,7 +181,7 @@ FieldSolution SolveField(const Density& density,
           y[sys.Phi(i, j, a)] = phi[j * m + a] + s.dt * i * pi[j * m + a];
     const auto r = FieldNewton(sys, y, options.newton, cache);
     ++s.windows;
-    s.newton_iterations += r.iterations;
+    s.factorizations += r.iterations;
     s.corrections += r.corrections;
     s.residual_norm = std::max(s.residual_norm, r.residual_norm);
     s.jacobian_nonzeros = r.jacobian_nonzeros;
@@ -192,25 +194,21 @@ FieldSolution SolveField(const Density& density,
       msg << "Newton did not converge in the window [" << t0 << ", " << t1
           << "]: " << r.reason;
       s.message = msg.str();
-      s.factorizations += cache.factorizations;
       s.seconds_total =
           std::chrono::duration<double>(Clock::now() - start).count();
       return s;
     }
-    keep(sys, y.data(), w == 0 ? 0 : 1, t0);
-    s.end = CorrectFieldEnd(sys, y.data());
+    sys.Fields(y.data(), v);
+    keep(sys, w == 0 ? 0 : 1, t0);
+    s.end = CorrectFieldEnd(sys, y.data(), v);
     if (w + 1 == sizes.size()) {
-      s.end_phi_node.resize(n);
-      for (int j = 0; j < s.nx; ++j)
-        for (int a = 0; a < m; ++a)
-          s.end_phi_node[j * m + a] = y[sys.Phi(int(pts) - 1, j, a)];
-      s.factor_nonzeros = cache.lu.FactorNonzeros();
+      const auto b = v.phi.begin() + sys.At(int(pts) - 1, 0, 0);
+      s.end_phi_node.assign(b, b + n);
     }
     phi = s.end.phi;
     pi = s.end.phi_t;
     t0 = t1;
   }
-  s.factorizations += cache.factorizations;
   s.converged = true;
   s.message = "converged";
   s.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
