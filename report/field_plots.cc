@@ -1,0 +1,141 @@
+#include "report/field_plots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "report/plot.h"
+
+namespace vivp::report {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void CheckSeries(const FieldSeries& f, int component) {
+  if (f.components < 1 || component < 0 || component >= f.components)
+    throw std::invalid_argument("field plot: component " +
+                                std::to_string(component) + " of " +
+                                std::to_string(f.components));
+  if (f.t.empty() || f.x.empty() ||
+      f.phi.size() != f.t.size() * f.x.size() * std::size_t(f.components))
+    throw std::invalid_argument(
+        "field plot: " + std::to_string(f.phi.size()) + " values for " +
+        std::to_string(f.t.size()) + " slices × " + std::to_string(f.x.size()) +
+        " points × " + std::to_string(f.components) + " components");
+}
+
+// Indices 0, k, 2k, … and always the last one, at most `most` of them.
+std::vector<std::size_t> Thin(std::size_t n, int most) {
+  const std::size_t k =
+      std::max<std::size_t>(1, (n + std::size_t(std::max(most, 2)) - 2) /
+                                   std::size_t(std::max(most - 1, 1)));
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < n; i += k) idx.push_back(i);
+  if (idx.back() != n - 1) idx.push_back(n - 1);
+  return idx;
+}
+
+std::string Quoted(const std::string& s) {
+  std::string q;
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return "\"" + q + "\"";
+}
+
+}  // namespace
+
+fs::path HeatMap(const fs::path& dir, const std::string& stem,
+                 const FieldSeries& f, const HeatMapStyle& style) {
+  CheckSeries(f, style.component);
+  const auto slices = Thin(f.t.size(), style.max_slices);
+  const auto points = Thin(f.x.size(), style.max_points);
+  std::vector<std::vector<double>> rows;
+  rows.reserve(slices.size() * points.size());
+  double top = 0;
+  for (std::size_t s : slices)
+    for (std::size_t j : points) {
+      const double v = f.At(s, j, style.component);
+      if (std::isfinite(v)) top = std::max(top, std::abs(v));
+      rows.push_back({f.x[j], f.t[s], v});
+    }
+  Figure fig(dir, stem, style.width, style.height);
+  const auto data = fig.Data("field", rows, "x t " + style.label);
+  auto& gp = fig.script();
+  if (!style.title.empty()) gp << "set title " << Quoted(style.title) << "\n";
+  gp << "set xlabel 'x'\nset ylabel 't'\n"
+     << "set cblabel " << Quoted(style.label) << "\n"
+     << "set xrange [" << f.x.front() << ":" << f.x[points.back()] << "]\n"
+     << "set yrange [" << f.t.front() << ":" << f.t.back() << "]\n";
+  if (style.symmetric && top > 0)
+    gp << "set cbrange [" << -top << ":" << top << "]\n"
+       << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n";
+  else
+    gp << "set palette viridis\n";
+  gp << "plot '" << data << "' using 1:2:3 with image notitle\n";
+  return fig.Render();
+}
+
+fs::path Snapshots(const fs::path& dir, const std::string& stem,
+                   const FieldSeries& f, const std::vector<double>& times,
+                   const std::string& title, int component) {
+  CheckSeries(f, component);
+  if (times.empty())
+    throw std::invalid_argument("snapshots: no times requested");
+  Figure fig(dir, stem);
+  auto& gp = fig.script();
+  if (!title.empty()) gp << "set title " << Quoted(title) << "\n";
+  gp << "set xlabel 'x'\nset ylabel 'φ'\nset key outside right\nplot ";
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    const auto near =
+        std::min_element(f.t.begin(), f.t.end(), [&](double a, double b) {
+          return std::abs(a - times[k]) < std::abs(b - times[k]);
+        });
+    const std::size_t s = std::size_t(near - f.t.begin());
+    std::vector<std::vector<double>> rows;
+    for (std::size_t j = 0; j < f.x.size(); ++j)
+      rows.push_back({f.x[j], f.At(s, j, component)});
+    const auto data = fig.Data("t" + std::to_string(k), rows, "x phi");
+    gp << (k ? ", " : "") << "'" << data << "' using 1:2 with lines lw 2 "
+       << "title 't = " << f.t[s] << "'";
+  }
+  gp << "\n";
+  return fig.Render();
+}
+
+fs::path Curves(
+    const fs::path& dir, const std::string& stem, const std::vector<double>& t,
+    const std::vector<std::pair<std::string, std::vector<double>>>& curves,
+    const CurveStyle& style) {
+  if (curves.empty()) throw std::invalid_argument("curves: nothing to plot");
+  Figure fig(dir, stem);
+  auto& gp = fig.script();
+  if (!style.title.empty()) gp << "set title " << Quoted(style.title) << "\n";
+  gp << "set xlabel " << Quoted(style.xlabel) << "\n";
+  if (!style.ylabel.empty())
+    gp << "set ylabel " << Quoted(style.ylabel) << "\n";
+  if (style.log_y) gp << "set logscale y\nset format y '10^{%T}'\n";
+  gp << "set key top left\nset grid\nplot ";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const auto& [name, y] = curves[k];
+    if (y.size() != t.size())
+      throw std::invalid_argument("curves: '" + name + "' has " +
+                                  std::to_string(y.size()) + " values for " +
+                                  std::to_string(t.size()) + " times");
+    std::vector<std::vector<double>> rows;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const double v = style.log_y ? std::abs(y[i]) : y[i];
+      if (std::isfinite(v) && (!style.log_y || v > 0))
+        rows.push_back({t[i], v});
+    }
+    const auto data = fig.Data("c" + std::to_string(k), rows, "t y");
+    gp << (k ? ", " : "") << "'" << data << "' using 1:2 with lines lw 2 title "
+       << Quoted(name);
+  }
+  gp << "\n";
+  return fig.Render();
+}
+
+}  // namespace vivp::report

@@ -1,0 +1,70 @@
+// Plots of a 1+1-dimensional field: the space-time heat map, snapshots at
+// chosen times, and quantities against time (energy, charge, error). They
+// take plain arrays, so a scene run, a figure program and a user's own
+// solve draw the same pictures.
+//
+//   vivp::report::FieldSeries f{.t = s.t, .x = xs, .phi = s.phi,
+//                               .components = 1};
+//   vivp::report::HeatMap(dir, "breather", f, {.title = "sine-Gordon"});
+//   vivp::report::Snapshots(dir, "breather_snapshots", f, {0.0, 1.0, 2.0});
+//   vivp::report::Curves(dir, "breather_energy", t, {{"E(t) - E(0)", dE}},
+//                        {.ylabel = "energy drift"});
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vivp::report {
+
+// Slices of a field: φ at (t[s], x[j], component a) is
+// phi[(s·x.size() + j)·components + a].
+struct FieldSeries {
+  std::vector<double> t, x;
+  std::vector<double> phi;
+  int components = 1;
+  double At(std::size_t s, std::size_t j, int a = 0) const {
+    return phi[(s * x.size() + j) * components + a];
+  }
+};
+
+struct HeatMapStyle {
+  std::string title;
+  std::string label = "φ";  // the colour bar
+  int component = 0;
+  // The data file is thinned to at most this many slices and points (every
+  // k-th, the last one kept), so a 512 × 512 field plots from a small file.
+  int max_slices = 400, max_points = 400;
+  bool symmetric = true;  // colour range ±max|φ|, zero in the middle
+  int width = 900, height = 650;
+};
+
+// x horizontally, t upwards. Writes STEM_field.dat, STEM.gp and STEM.png in
+// dir; returns the PNG. Throws std::invalid_argument on a series whose sizes
+// do not agree and std::runtime_error if the plot cannot be written.
+std::filesystem::path HeatMap(const std::filesystem::path& dir,
+                              const std::string& stem, const FieldSeries& f,
+                              const HeatMapStyle& style = {});
+
+// φ(x) at the slices nearest to each requested time, one curve each.
+std::filesystem::path Snapshots(const std::filesystem::path& dir,
+                                const std::string& stem, const FieldSeries& f,
+                                const std::vector<double>& times,
+                                const std::string& title = "",
+                                int component = 0);
+
+struct CurveStyle {
+  std::string title;
+  std::string xlabel = "t", ylabel;
+  bool log_y = false;  // plots |y|; zeros are left out
+};
+
+// Named curves y(t) on the same axes.
+std::filesystem::path Curves(
+    const std::filesystem::path& dir, const std::string& stem,
+    const std::vector<double>& t,
+    const std::vector<std::pair<std::string, std::vector<double>>>& curves,
+    const CurveStyle& style = {});
+
+}  // namespace vivp::report
