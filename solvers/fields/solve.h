@@ -37,6 +37,7 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
 #include "solvers/fields/end_state.h"
+#include "solvers/fields/input.h"
 #include "solvers/fields/newton.h"
 #include "solvers/fields/resolution.h"
 #include "solvers/variational/resolution.h"
@@ -111,18 +112,8 @@ FieldSolution SolveField(const Density& density,
     throw std::invalid_argument(
         grid.op + " needs at least " + std::to_string(table.min_points) +
         " time points, got " + std::to_string(grid.points));
-  if (!(grid.t_end > 0) || !std::isfinite(grid.t_end))
-    throw std::invalid_argument("t_end must be positive and finite");
+  CheckFieldInput(grid.t_end, dx, m, phi0, pi0);
   const std::size_t n = static_cast<std::size_t>(s.nx) * m;
-  if (phi0.size() != n || pi0.size() != n)
-    throw std::invalid_argument("initial data: expected " + std::to_string(n) +
-                                " values of φ and of φ_t, got " +
-                                std::to_string(phi0.size()) + " and " +
-                                std::to_string(pi0.size()));
-  for (std::size_t k = 0; k < n; ++k)
-    if (!std::isfinite(phi0[k]) || !std::isfinite(pi0[k]))
-      throw std::invalid_argument("initial data: non-finite value at x = " +
-                                  std::to_string(dx.x(int(k / m))));
   s.dt = grid.t_end / double(grid.points - 1);
   s.limit = variational::StabilityLimit(grid.op);
   const auto sizes =
