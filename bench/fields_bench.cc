@@ -1,4 +1,4 @@
-// Cost of the space-time field solve (solvers/fields), two tables:
+// Cost of the space-time field solve (solvers/fields), three tables:
 //
 // 1. One Newton iteration over all Nt × Nx points of the sine-Gordon breather
 //    (order-8 periodic differences on [−20, 20), Δt = 0.01): residual,
@@ -9,9 +9,10 @@
 // 2. The breather to T = 100, marched and by the method of lines on the
 //    same spatial operator: max error against the exact solution, energy
 //    drift, windows, factorizations, time.
+// 3. Marching memory against Nt (only the end state kept).
 //
 // Usage: fields_bench [--quick | --long-run]   (--quick: the 2^18-point
-// rows of table 1 only; --long-run: table 2 only)
+// rows of table 1 only; --long-run: tables 2 and 3)
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -242,6 +243,32 @@ void Table2() {
   }
 }
 
+// 3. Marching memory: the breather on 512 points, SBP42 in windows of 16,
+//    only the end state kept (keep_field = false), for growing Nt. The peak
+//    resident memory of the run should not grow with Nt.
+void Table3() {
+  std::printf(
+      "\nMarching memory: the breather on [−20, 20), 512 points, SBP42 in\n"
+      "windows of 16, Δt = 0.02, only the end state kept\n\n"
+      "| Nt | windows | seconds | peak MB |\n|---|---|---|---|\n");
+  for (const int nt : {501, 2001, 8001}) {
+    const double mb = InChild([&] {
+      const fields::SineGordon sg;
+      const auto dx =
+          sbp::SpaceDerivative<double>::Periodic(8, 512, -20.0, 40.0);
+      const auto [phi0, pi0] =
+          fields::InitialData(fields::SineGordonBreather{0.5}, dx);
+      fields::FieldSolveOptions o;
+      o.keep_field = false;
+      const auto s = fields::SolveField(
+          sg, dx, {"sbp42", nt, 0.02 * (nt - 1), 16}, phi0, pi0, o);
+      std::printf("| %d | %d | %.1f |", nt, s.windows, s.seconds_total);
+      if (!s.converged) std::printf(" %s |", s.message.c_str());
+    });
+    std::printf(" %.0f |\n", mb);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -249,11 +276,14 @@ int main(int argc, char** argv) {
   if (arg != "" && arg != "--quick" && arg != "--long-run") {
     std::fprintf(stderr,
                  "fields_bench: unknown argument '%s' (--quick: the 2^18-point "
-                 "rows only; --long-run: the T = 100 table only)\n",
+                 "rows only; --long-run: tables 2 and 3 only)\n",
                  arg.c_str());
     return 2;
   }
   if (arg != "--long-run") Table1(arg == "--quick");
-  if (arg != "--quick") Table2();
+  if (arg != "--quick") {
+    Table2();
+    Table3();
+  }
   return 0;
 }
