@@ -24,4 +24,11 @@ void ReadInitial(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadTime(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadOutput(const TomlReader& r, const toml::table& root, Scene& s);
 
+// A table naming its type among `catalogue` (an [[effect]] or a field's
+// [[term]], the noun of the messages) and giving that type's parameters,
+// each checked against its kind (dof: the length of vector parameters).
+EffectSpec ReadTypedTable(const TomlReader& r, const toml::table& t,
+                          const std::vector<EffectType>& catalogue,
+                          const std::string& noun, int dof);
+
 }  // namespace vivp::scene::detail
