@@ -129,11 +129,18 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
             << ", corrected end state " << Rounded(run.end_state_error) << "\n";
     } else {
       const double drift = j["max_change"].get<double>();
+      double interior = 0;
+      for (std::size_t k = 0; k < run.values[c].size(); ++k)
+        if (!run.window_end[k])
+          interior =
+              std::max(interior, std::abs(run.values[c][k] - stats.first));
       j["relative_drift"] =
           JsonNumber(drift / std::max(std::abs(stats.first), 1e-300));
+      j["max_change_interior"] = interior;
       human << "  " << name << ": " << Rounded(stats.first) << " → "
             << Rounded(stats.last) << " (max change " << Rounded(drift)
-            << ")\n";
+            << "; " << Rounded(interior)
+            << " away from the windows' last slices)\n";
     }
     d[name] = j;
   }

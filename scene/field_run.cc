@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/action/field_charges.h"
+#include "core/sbp/builder.h"
 #include "solvers/fields/composed.h"
 
 namespace vivp::scene {
@@ -42,6 +43,12 @@ FieldRun Run(const FieldScene& s,
   const auto& sol = run.solution;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.converged) return run;
+  run.window_end.assign(sol.t.size(), 0);
+  std::size_t last = 0;
+  for (long long size : fields::detail::WindowSizes(
+           s.time_points, s.method.window_points,
+           sbp::Table(s.method.op).min_points))
+    run.window_end.at(last += std::size_t(size - 1)) = 1;
   run.columns = s.output.diagnostics;
   run.values.assign(run.columns.size(), {});
   const std::size_t n = std::size_t(dx.points()) * M;
