@@ -2,6 +2,7 @@
 // over a list of grid sizes (Rothkopf & Nordström 2023, Figs. 6-13).
 #include "apps/converge_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -12,6 +13,7 @@
 #include "apps/command.h"
 #include "core/sbp/builder.h"
 #include "solvers/variational/solver_choice.h"
+#include "studies/field_problems.h"
 #include "studies/registry.h"
 
 namespace vivp::apps {
@@ -30,11 +32,10 @@ nlohmann::json StudyJson(const ConvergeOptions& o,
           {"t_end", o.t_end},        {"slab_points", slab_points}};
 }
 
-namespace {
-
-std::vector<long long> ParsePoints(const std::string& list) {
+std::vector<long long> ParsePoints(const std::string& list,
+                                   const std::string& flag) {
   return ParseList<long long>(
-      list, "--points", "whole numbers", "16,32,64",
+      list, flag, "whole numbers", "16,32,64",
       [](const std::string& item) -> std::optional<long long> {
         std::size_t used = 0;
         long long v = 0;
@@ -47,6 +48,8 @@ std::vector<long long> ParsePoints(const std::string& list) {
         return v;
       });
 }
+
+namespace {
 
 nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
   return {{"x", JsonNumber(o.x)},
@@ -89,7 +92,7 @@ ConvergeOptions Resolved(const ConvergeOptions& o,
 // The grid sizes of --points. Every grid is checked before any work, so
 // that a bad size is the user's error (exit 2), not a study cut short.
 std::vector<long long> CheckedGridSizes(const ConvergeOptions& o) {
-  const std::vector<long long> points = ParsePoints(o.points);
+  const std::vector<long long> points = ParsePoints(o.points, "--points");
   for (long long n : points) {
     try {
       sbp::MakeOperator<double>(o.op, n, 0.0, o.t_end);
@@ -204,6 +207,19 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
 int RunConverge(const ConvergeOptions& given) {
   if (!given.json.empty() && given.json != "-")
     CheckOutputFile(given.json, given.force);
+  if (!given.field.empty()) return RunFieldConverge(given);
+  if (given.problem.empty())
+    throw UsageError(
+        "--problem NAME or --field NAME is required; point-mechanics "
+        "problems: " +
+        studies::ProblemNameList() + "; field problems: " +
+        studies::FieldProblemNameList());
+  for (const char* flag : {"--space-points", "--space-order"})
+    if (std::find(given.flags_given.begin(), given.flags_given.end(),
+                  flag) != given.flags_given.end())
+      throw UsageError(std::string(flag) +
+                       " applies to --field problems only; drop it or use "
+                       "--field NAME");
   const studies::NamedProblem& problem = studies::FindProblem(given.problem);
   const variational::SolveOptions options = ConvergeSolveOptions(given);
   const ConvergeOptions o = Resolved(given, options);
@@ -236,9 +252,13 @@ Runner AddConvergeCommand(CLI::App& app) {
       "converge",
       "Errors at t_end and fitted orders of the variational solver over grid "
       "sizes");
-  cmd->add_option("--problem", o->problem,
-                  "problem: " + studies::ProblemNameList())
-      ->required();
+  CLI::Option* problem = cmd->add_option(
+      "--problem", o->problem, "problem: " + studies::ProblemNameList());
+  CLI::Option* field = cmd->add_option(
+      "--field", o->field,
+      "field problem (instead of --problem): " +
+          studies::FieldProblemNameList());
+  problem->excludes(field);
   std::vector<std::string> names(sbp::kOperatorNames.begin(),
                                  sbp::kOperatorNames.end());
   cmd->add_option("--operator", o->op, "SBP operator")
@@ -270,8 +290,21 @@ Runner AddConvergeCommand(CLI::App& app) {
           ->check(WholeNumberAtLeast(0, ">= 0 (0: one global solve)"));
   cmd->add_flag("--extended-residual", o->extended_residual,
                 "reduced Newton: refinement residual in long double");
-  return [o, slab] {
+  cmd->add_option("--space-points", o->space_points,
+                  "--field: spatial points, or a comma-separated list for "
+                  "orders in Δx at one --points (default: the problem's)");
+  cmd->add_option("--space-order", o->space_order,
+                  "--field: order 2, 4, 6, 8 of the spatial operator "
+                  "(periodic differences, or sbp21 … sbp84 on an interval; "
+                  "default: the problem's)")
+      ->check(WholeNumberAtLeast(2, ">= 2 (2, 4, 6 or 8)"));
+  return [o, slab, points, cmd] {
     o->slab_points_given = slab->count() > 0;
+    o->points_given = points->count() > 0;
+    for (const char* flag : {"--tolerance", "--solver", "--extended-residual",
+                             "--space-points", "--space-order"})
+      if (cmd->get_option(flag)->count() > 0)
+        o->flags_given.push_back(flag);
     return RunConverge(*o);
   };
 }

@@ -4,19 +4,13 @@
 
 #include "core/sbp/builder.h"
 #include "scene/field_sections.h"
+#include "solvers/fields/composed.h"
 #include "scene/text.h"
 
 namespace vivp::scene::detail {
 
 namespace {
 
-// A global solve factors the whole space-time grid at once. SBP21 has no
-// fill (512 × 512 in 710 MB); the other operators fill heavily (128 × 128,
-// 16384 points, took 273 MB, and the fill grows eightfold per doubling of
-// both sides; docs/fields.md §3, §8). A window is held to the same size.
-long long MaxSolvedAtOnce(const std::string& op) {
-  return op == "sbp21" ? 1LL << 18 : 1LL << 14;
-}
 // Every slice of φ and φ_t is kept for the output: 2^24 values are 256 MB.
 constexpr long long kMaxFieldValues = 1LL << 24;
 constexpr long long kMaxSpacePoints = 1LL << 16;
@@ -195,18 +189,18 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
            "expected window_points <= points (or 0 for one global solve)");
   }
   const long long at_once = (w > 0 ? w : s.time_points) * slice;
-  if (at_once > MaxSolvedAtOnce(s.method.op))
+  if (at_once > fields::MaxSolvedAtOnce(s.method.op))
     r.Fail(points,
            std::string(w > 0 ? "a window" : "one global solve") + " of " +
                std::to_string(w > 0 ? w : s.time_points) + " × " +
                std::to_string(slice) + " values is too large for " +
                s.method.op,
-           "expected at most " + std::to_string(MaxSolvedAtOnce(s.method.op)) +
+           "expected at most " + std::to_string(fields::MaxSolvedAtOnce(s.method.op)) +
                " values solved at once: march with [method] window_points = " +
                std::to_string(std::max<long long>(
                    sbp::Table(s.method.op).min_points,
                    std::min<long long>(16,
-                                       MaxSolvedAtOnce(s.method.op) / slice))));
+                                       fields::MaxSolvedAtOnce(s.method.op) / slice))));
 }
 
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,

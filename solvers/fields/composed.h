@@ -4,6 +4,7 @@
 // field problems of studies/ call it without instantiating the solver again.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/sbp/space.h"
@@ -11,6 +12,17 @@
 #include "solvers/fields/solve.h"
 
 namespace vivp::fields {
+
+// The most values (time points × spatial points × components) that a scene
+// or a study solves at once, in one global solve or one window; beyond it,
+// march in windows. SBP21 has no fill (512 × 512 in 710 MB, docs/fields.md
+// §8). The others fill: a global Klein–Gordon solve took 0.75 GB at
+// 513 × 128 and 1.1 GB at 257 × 256 with SBP42, 2.1 GB at 257 × 256 with
+// SBP84 (peak memory, `vivp converge --field klein_gordon`).
+inline long long MaxSolvedAtOnce(const std::string& op) {
+  if (op == "sbp21") return 1LL << 18;
+  return op == "sbp42" ? 1LL << 16 : 1LL << 15;
+}
 
 #define VIVP_FIELD_SOLVE(M)                                           \
   template FieldSolution SolveField<ComposedDensity<M>>(              \
