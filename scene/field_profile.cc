@@ -168,6 +168,10 @@ ProfileFormulas PlaneWave(const ProfileValues& p, const TermSet& terms) {
     omega2 += lq * a * a + l4 * (a * a - v * v);
     exact = terms.Within({"kinetic", "gradient", "mass", "quartic", "phi4"});
   }
+  if (!std::isfinite(omega2))
+    p.Fail("amplitude", "the plane wave's ω² overflows for these values",
+           "an amplitude and k for which c²k² + m² + λ_q A² + λ_4(A² − v²) "
+           "is a finite number");
   if (!(omega2 >= 0))
     p.Fail("amplitude",
            "the plane wave's ω² = " + FormatNumber(omega2) +

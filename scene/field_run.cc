@@ -45,9 +45,9 @@ FieldRun Run(const FieldScene& s,
   if (!sol.converged) return run;
   run.window_end.assign(sol.t.size(), 0);
   std::size_t last = 0;
-  for (long long size : fields::detail::WindowSizes(
-           s.time_points, s.method.window_points,
-           sbp::Table(s.method.op).min_points))
+  for (long long size :
+       fields::detail::WindowSizes(s.time_points, s.method.window_points,
+                                   sbp::Table(s.method.op).min_points))
     run.window_end.at(last += std::size_t(size - 1)) = 1;
   run.columns = s.output.diagnostics;
   run.values.assign(run.columns.size(), {});

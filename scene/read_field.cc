@@ -4,8 +4,8 @@
 
 #include "core/sbp/builder.h"
 #include "scene/field_sections.h"
-#include "solvers/fields/composed.h"
 #include "scene/text.h"
+#include "solvers/fields/composed.h"
 
 namespace vivp::scene::detail {
 
@@ -189,18 +189,22 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
            "expected window_points <= points (or 0 for one global solve)");
   }
   const long long at_once = (w > 0 ? w : s.time_points) * slice;
-  if (at_once > fields::MaxSolvedAtOnce(s.method.op))
-    r.Fail(points,
-           std::string(w > 0 ? "a window" : "one global solve") + " of " +
-               std::to_string(w > 0 ? w : s.time_points) + " × " +
-               std::to_string(slice) + " values is too large for " +
-               s.method.op,
-           "expected at most " + std::to_string(fields::MaxSolvedAtOnce(s.method.op)) +
-               " values solved at once: march with [method] window_points = " +
-               std::to_string(std::max<long long>(
-                   sbp::Table(s.method.op).min_points,
-                   std::min<long long>(16,
-                                       fields::MaxSolvedAtOnce(s.method.op) / slice))));
+  const long long most = fields::MaxSolvedAtOnce(s.method.op);
+  if (at_once <= most) return;
+  // The longest window of at most 16 points that fits, if any does.
+  const long long fits = std::min<long long>(16, most / slice);
+  const std::string fix =
+      fits >= minimum
+          ? "march with [method] window_points = " + std::to_string(fits)
+          : "use fewer spatial points (" + std::to_string(most / minimum) +
+                " values per slice at most for windows of " +
+                std::to_string(minimum) + ")";
+  r.Fail(w > 0 ? *root["method"]["window_points"].node() : points,
+         std::string(w > 0 ? "a window" : "one global solve") + " of " +
+             std::to_string(w > 0 ? w : s.time_points) + " × " +
+             std::to_string(slice) + " values is too large for " + s.method.op,
+         "expected at most " + std::to_string(most) +
+             " values solved at once: " + fix);
 }
 
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,

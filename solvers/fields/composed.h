@@ -16,12 +16,11 @@ namespace vivp::fields {
 // The most values (time points × spatial points × components) that a scene
 // or a study solves at once, in one global solve or one window; beyond it,
 // march in windows. SBP21 has no fill (512 × 512 in 710 MB, docs/fields.md
-// §8). The others fill: a global Klein–Gordon solve took 0.75 GB at
-// 513 × 128 and 1.1 GB at 257 × 256 with SBP42, 2.1 GB at 257 × 256 with
-// SBP84 (peak memory, `vivp converge --field klein_gordon`).
+// §8). The others fill: a global Klein–Gordon solve took 0.35 GB and 3.3 s
+// at 257 × 128 with SBP42, 1.1 GB at 257 × 256, and 2.1 GB and 55 s at
+// 257 × 256 with SBP84 (peak memory, `vivp converge --field klein_gordon`).
 inline long long MaxSolvedAtOnce(const std::string& op) {
-  if (op == "sbp21") return 1LL << 18;
-  return op == "sbp42" ? 1LL << 16 : 1LL << 15;
+  return op == "sbp21" ? 1LL << 18 : 1LL << 15;
 }
 
 #define VIVP_FIELD_SOLVE(M)                                           \
