@@ -138,9 +138,8 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
           JsonNumber(drift / std::max(std::abs(stats.first), 1e-300));
       j["max_change_interior"] = interior;
       human << "  " << name << ": " << Rounded(stats.first) << " → "
-            << Rounded(stats.last) << " (max change " << Rounded(drift)
-            << "; " << Rounded(interior)
-            << " away from the windows' last slices)\n";
+            << Rounded(stats.last) << " (max change " << Rounded(drift) << "; "
+            << Rounded(interior) << " away from the windows' last slices)\n";
     }
     d[name] = j;
   }
@@ -283,7 +282,8 @@ int CheckFieldScene(const scene::FieldScene& s) {
   std::cout << s.source << ": ok";
   if (!s.title.empty()) std::cout << " — " << s.title;
   std::cout << "\n  field of " << s.components << " component(s), " << dx.name()
-            << " on [" << s.x0 << ", " << s.x1 << "], " << dx.points()
+            << " on [" << s.x0 << ", " << s.x1
+            << (s.boundary == "periodic" ? "), " : "], ") << dx.points()
             << " points; " << s.terms.size() << " term(s):";
   for (const auto& t : s.terms) std::cout << " " << t.type->name;
   std::cout << "\n  profile " << s.initial.profile

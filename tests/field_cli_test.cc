@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "tests/cli_run.h"
@@ -103,7 +104,7 @@ BOOST_AUTO_TEST_CASE(Run_WritesTheFieldDiagnosticsPlotsAndSummary) {
   BOOST_TEST(j["diagnostics"]["error"]["max"].get<double>() < 1e-4);
   BOOST_TEST(j["diagnostics"]["error"]["end_state"].get<double>() < 1e-6);
   BOOST_TEST(j["diagnostics"]["energy"]["initial"].get<double>() ==
-                 2 * M_PI * 1.0,  // ½(k² + m²)·L for A = 1, ω² = 2
+                 2 * std::numbers::pi,  // ½A²(ω² + k² + m²)·π, ω² = 2
              boost::test_tools::tolerance(1e-6));
   const std::string csv = Slurp(out / "field.csv");
   BOOST_TEST(csv.rfind("t,x,phi,phi_t\n", 0) == 0u);
@@ -183,8 +184,11 @@ BOOST_AUTO_TEST_CASE(CsvProfile_IsCheckedRowByRow) {
     std::ofstream f(s.dir / "samples.csv");
     f << "phi,phi_t\n";
     for (int j = 0; j < rows; ++j)
-      f << (j == bad_row ? "inf" : std::to_string(std::cos(2 * M_PI * j / 32)))
-        << "," << std::sin(2 * M_PI * j / 32) * std::sqrt(2.0) << "\n";
+      f << (j == bad_row
+                ? "inf"
+                : std::to_string(std::cos(2 * std::numbers::pi * j / 32)))
+        << "," << std::sin(2 * std::numbers::pi * j / 32) * std::sqrt(2.0)
+        << "\n";
   };
   samples(31, -1);
   const std::string path = (s.dir / "samples.csv").string();
@@ -209,7 +213,8 @@ BOOST_AUTO_TEST_CASE(CsvProfile_IsCheckedRowByRow) {
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   const auto j =
       nlohmann::json::parse(Slurp(s.dir / "ok.out" / "summary.json"));
-  BOOST_TEST(j["diagnostics"]["energy"]["initial"].get<double>() == 2 * M_PI,
+  BOOST_TEST(j["diagnostics"]["energy"]["initial"].get<double>() ==
+                 2 * std::numbers::pi,
              boost::test_tools::tolerance(1e-5));
 }
 
