@@ -257,7 +257,8 @@ Runner AddConvergeCommand(CLI::App& app) {
   CLI::Option* field = cmd->add_option(
       "--field", o->field,
       "field problem (instead of --problem): " +
-          studies::FieldProblemNameList());
+          studies::FieldProblemNameList() +
+          "; its --points default to 17,33,65,129 (docs/field_scenes.md §7)");
   problem->excludes(field);
   std::vector<std::string> names(sbp::kOperatorNames.begin(),
                                  sbp::kOperatorNames.end());
