@@ -179,29 +179,63 @@ std::vector<std::size_t> WrittenSlices(const scene::FieldScene& s,
   return k;
 }
 
+namespace {
+
+// The solve, with the progress line of a terminal: windows done of all.
+scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
+  std::atomic<int> done{0}, total{0};
+  std::atomic<double> reached{0};
+  ProgressLine progress(
+      [&]() -> std::string {
+        if (total == 0) return "";
+        std::ostringstream line;
+        line << "window " << done << " of " << total
+             << " (t = " << std::setprecision(3) << reached.load() << " of "
+             << s.t_end << "), ";
+        return line.str();
+      },
+      !quiet);
+  return scene::RunFieldScene(s, [&](int d, int n, double t) {
+    done = d;
+    total = n;
+    reached = t;
+  });
+}
+
+// The title, the grids and the solver's account, for the reader.
+void PrintRun(std::ostream& human, const scene::FieldScene& s,
+              const fields::FieldSolution& sol) {
+  const auto dx = s.Space();
+  human << (s.title.empty() ? s.source : s.title)
+        << "\n  field: " << s.components
+        << (s.components == 1 ? " component, " : " components, ") << dx.name()
+        << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
+        << (s.boundary == "periodic" ? ")" : "]") << ", " << dx.points()
+        << " points\n  " << s.method.op << ", " << s.time_points
+        << " time points on [0, " << Rounded(s.t_end) << "]";
+  if (sol.windows > 1) human << ", " << sol.windows << " windows";
+  human << ": " << sol.message << ", " << sol.factorizations
+        << " Newton iterations, " << Rounded(sol.seconds_total) << " s\n"
+        << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
+        << Rounded(sol.limit) << ")\n";
+}
+
+nlohmann::json SolverJson(const fields::FieldSolution& sol) {
+  return {{"windows", sol.windows},
+          {"newton_iterations", sol.factorizations},
+          {"corrections", sol.corrections},
+          {"jacobian_nonzeros", sol.jacobian_nonzeros},
+          {"residual_norm", sol.residual_norm},
+          {"end_phi_estimate", sol.end.phi_estimate},
+          {"end_phi_t_estimate", sol.end.phi_t_estimate}};
+}
+
+}  // namespace
+
 int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
   const auto start = std::chrono::steady_clock::now();
-  std::atomic<int> done{0}, total{0};
-  std::atomic<double> reached{0};
-  scene::FieldRun run;
-  {
-    ProgressLine progress(
-        [&]() -> std::string {
-          if (total == 0) return "";
-          std::ostringstream line;
-          line << "window " << done << " of " << total
-               << " (t = " << std::setprecision(3) << reached.load() << " of "
-               << s.t_end << "), ";
-          return line.str();
-        },
-        !quiet);
-    run = scene::RunFieldScene(s, [&](int d, int n, double t) {
-      done = d;
-      total = n;
-      reached = t;
-    });
-  }
+  const scene::FieldRun run = SolveShowingProgress(s, quiet);
   const auto& sol = run.solution;
   if (!sol.converged) {
     // The grid is the scene's: refused like any other bad value.
@@ -224,21 +258,8 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   std::vector<std::string> warnings;
   for (const auto& f : WriteFieldPlots(staging, s, run, warnings))
     files.push_back(f);
-
   std::ostringstream human;
-  const auto dx = s.Space();
-  human << (s.title.empty() ? s.source : s.title)
-        << "\n  field: " << s.components
-        << (s.components == 1 ? " component, " : " components, ") << dx.name()
-        << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
-        << (s.boundary == "periodic" ? ")" : "]") << ", " << dx.points()
-        << " points\n  " << s.method.op << ", " << s.time_points
-        << " time points on [0, " << Rounded(s.t_end) << "]";
-  if (sol.windows > 1) human << ", " << sol.windows << " windows";
-  human << ": " << sol.message << ", " << sol.factorizations
-        << " Newton iterations, " << Rounded(sol.seconds_total) << " s\n"
-        << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
-        << Rounded(sol.limit) << ")\n";
+  PrintRun(human, s, sol);
   const nlohmann::json diagnostics = Diagnostics(run, human);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -249,14 +270,7 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
       {"status", {{"converged", sol.converged}, {"message", sol.message}}},
       {"grid", GridJson(s, run)},
       {"resolution", {{"omega_dt", sol.omega_dt}, {"limit", sol.limit}}},
-      {"solver",
-       {{"windows", sol.windows},
-        {"newton_iterations", sol.factorizations},
-        {"corrections", sol.corrections},
-        {"jacobian_nonzeros", sol.jacobian_nonzeros},
-        {"residual_norm", sol.residual_norm},
-        {"end_phi_estimate", sol.end.phi_estimate},
-        {"end_phi_t_estimate", sol.end.phi_t_estimate}}},
+      {"solver", SolverJson(sol)},
       {"seconds", {{"solve", sol.seconds_total}, {"total", seconds}}},
       {"diagnostics", diagnostics},
       {"layout", layout},
