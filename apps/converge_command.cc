@@ -32,6 +32,29 @@ nlohmann::json StudyJson(const ConvergeOptions& o,
           {"t_end", o.t_end},        {"slab_points", slab_points}};
 }
 
+nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
+  return {{"x", JsonNumber(o.x)},
+          {"v", JsonNumber(o.v)},
+          {"x_corrected", JsonNumber(o.x_corrected)},
+          {"p_corrected", JsonNumber(o.p_corrected)}};
+}
+
+nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r) {
+  return {{"points", r.points},
+          {"dt", r.dt},
+          {"dt_true", r.dt_true},
+          {"err_x", JsonNumber(r.err_x)},
+          {"err_v", JsonNumber(r.err_v)},
+          {"err_x_corrected", JsonNumber(r.err_x_corrected)},
+          {"err_p_corrected", JsonNumber(r.err_p_corrected)},
+          {"error_estimate", JsonNumber(r.error_estimate)},
+          {"iterations", r.iterations},
+          {"fallbacks", r.fallbacks},
+          {"seconds", r.seconds},
+          {"converged", r.converged},
+          {"status", r.reason}};
+}
+
 std::vector<long long> ParsePoints(const std::string& list,
                                    const std::string& flag) {
   return ParseList<long long>(
@@ -50,13 +73,6 @@ std::vector<long long> ParsePoints(const std::string& list,
 }
 
 namespace {
-
-nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
-  return {{"x", JsonNumber(o.x)},
-          {"v", JsonNumber(o.v)},
-          {"x_corrected", JsonNumber(o.x_corrected)},
-          {"p_corrected", JsonNumber(o.p_corrected)}};
-}
 
 // The solver of --solver and its options.
 variational::SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
@@ -183,20 +199,7 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
                                     const studies::NamedProblem& problem,
                                     const studies::ConvergenceStudy& study) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : study.rows)
-    rows.push_back({{"points", r.points},
-                    {"dt", r.dt},
-                    {"dt_true", r.dt_true},
-                    {"err_x", JsonNumber(r.err_x)},
-                    {"err_v", JsonNumber(r.err_v)},
-                    {"err_x_corrected", JsonNumber(r.err_x_corrected)},
-                    {"err_p_corrected", JsonNumber(r.err_p_corrected)},
-                    {"error_estimate", JsonNumber(r.error_estimate)},
-                    {"iterations", r.iterations},
-                    {"fallbacks", r.fallbacks},
-                    {"seconds", r.seconds},
-                    {"converged", r.converged},
-                    {"status", r.reason}});
+  for (const auto& r : study.rows) rows.push_back(ConvergenceRowJson(r));
   nlohmann::json j = StudyJson(o, problem, o.slab_points);
   j["rows"] = rows;
   j["orders"] = OrdersJson(study.orders);
@@ -212,11 +215,11 @@ int RunConverge(const ConvergeOptions& given) {
     throw UsageError(
         "--problem NAME or --field NAME is required; point-mechanics "
         "problems: " +
-        studies::ProblemNameList() + "; field problems: " +
-        studies::FieldProblemNameList());
+        studies::ProblemNameList() +
+        "; field problems: " + studies::FieldProblemNameList());
   for (const char* flag : {"--space-points", "--space-order"})
-    if (std::find(given.flags_given.begin(), given.flags_given.end(),
-                  flag) != given.flags_given.end())
+    if (std::find(given.flags_given.begin(), given.flags_given.end(), flag) !=
+        given.flags_given.end())
       throw UsageError(std::string(flag) +
                        " applies to --field problems only; drop it or use "
                        "--field NAME");
@@ -304,8 +307,7 @@ Runner AddConvergeCommand(CLI::App& app) {
     o->points_given = points->count() > 0;
     for (const char* flag : {"--tolerance", "--solver", "--extended-residual",
                              "--space-points", "--space-order"})
-      if (cmd->get_option(flag)->count() > 0)
-        o->flags_given.push_back(flag);
+      if (cmd->get_option(flag)->count() > 0) o->flags_given.push_back(flag);
     return RunConverge(*o);
   };
 }

@@ -34,6 +34,11 @@ struct ConvergeOptions {
   bool points_given = false;
 };
 
+// A study's fitted orders, and one row of a study over grid sizes, as the
+// JSON of `vivp converge` has them.
+nlohmann::json OrdersJson(const studies::ConvergenceOrders& o);
+nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r);
+
 // The whole numbers of a comma-separated list option such as --points
 // "16,32,64"; a bad item is a UsageError naming `flag`.
 std::vector<long long> ParsePoints(const std::string& list,

@@ -146,33 +146,17 @@ bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
   return converged == int(study.rows.size());
 }
 
-nlohmann::json OrdersOf(const studies::ConvergenceOrders& o) {
-  return {{"x", JsonNumber(o.x)},
-          {"v", JsonNumber(o.v)},
-          {"x_corrected", JsonNumber(o.x_corrected)},
-          {"p_corrected", JsonNumber(o.p_corrected)}};
-}
-
 nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
                               const studies::FieldStudyOptions& so,
                               const studies::FieldConvergenceStudy& study) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : study.rows)
-    rows.push_back({{"points", r.points},
-                    {"space_points", r.space_points},
-                    {"dt", r.dt},
-                    {"dt_true", r.dt_true},
-                    {"dx", r.dx},
-                    {"err_x", JsonNumber(r.err_x)},
-                    {"err_v", JsonNumber(r.err_v)},
-                    {"err_x_corrected", JsonNumber(r.err_x_corrected)},
-                    {"err_p_corrected", JsonNumber(r.err_p_corrected)},
-                    {"error_estimate", JsonNumber(r.error_estimate)},
-                    {"iterations", r.iterations},
-                    {"windows", r.windows},
-                    {"seconds", r.seconds},
-                    {"converged", r.converged},
-                    {"status", r.reason}});
+  for (const auto& r : study.rows) {
+    nlohmann::json row = ConvergenceRowJson(r);
+    row["space_points"] = r.space_points;
+    row["dx"] = r.dx;
+    row["windows"] = r.windows;
+    rows.push_back(row);
+  }
   const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
   nlohmann::json j = {{"field", p.name},
                       {"description", p.description},
@@ -185,8 +169,8 @@ nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
                       {"study", study.in_space ? "space" : "time"},
                       {"step", study.in_space ? "dx" : "dt"},
                       {"rows", rows},
-                      {"orders", OrdersOf(study.orders)}};
-  if (!study.in_space) j["orders_true_dt"] = OrdersOf(study.orders_true_dt);
+                      {"orders", OrdersJson(study.orders)}};
+  if (!study.in_space) j["orders_true_dt"] = OrdersJson(study.orders_true_dt);
   return j;
 }
 

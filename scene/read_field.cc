@@ -4,6 +4,7 @@
 
 #include "core/sbp/builder.h"
 #include "scene/field_sections.h"
+#include "scene/sections.h"
 #include "scene/text.h"
 #include "solvers/fields/composed.h"
 
@@ -221,26 +222,19 @@ void ReadFieldOutput(const TomlReader& r, const toml::table& root,
              "expected phi_t = true (write φ_t next to φ) or false");
     s.output.phi_t = *n->value<bool>();
   }
-  const toml::node* n = t.get("diagnostics");
-  if (!n) return;
-  const toml::array* a = n->as_array();
-  if (!a)
-    r.Fail(*n, "'diagnostics' must be an array, got " + TypeName(*n),
-           "expected e.g. diagnostics = [\"energy\"], names from " +
-               Join(FieldDiagnosticNames()));
-  for (const toml::node& e : *a) {
-    const std::string d = r.Choice(e, "diagnostic", FieldDiagnosticNames());
-    if (s.Wants(d))
-      r.Fail(e, "diagnostic " + Quote(d) + " is listed twice",
-             "expected each diagnostic once");
-    if (d == "charge" && s.components != 2)
-      r.Fail(e, "diagnostic 'charge' is the U(1) charge of two components",
-             "expected components = 2, or no 'charge'");
-    if (d == "error" && !s.exact)
-      r.Fail(e, "diagnostic 'error' needs an exact solution: " + s.no_exact,
-             "expected no 'error' for this profile and these terms");
-    s.output.diagnostics.push_back(d);
-  }
+  if (const toml::node* n = t.get("diagnostics"))
+    s.output.diagnostics = ReadDiagnosticList(
+        r, *n, FieldDiagnosticNames(),
+        [&](const toml::node& e, const std::string& d) {
+          if (d == "charge" && s.components != 2)
+            r.Fail(e,
+                   "diagnostic 'charge' is the U(1) charge of two components",
+                   "expected components = 2, or no 'charge'");
+          if (d == "error" && !s.exact)
+            r.Fail(e,
+                   "diagnostic 'error' needs an exact solution: " + s.no_exact,
+                   "expected no 'error' for this profile and these terms");
+        });
 }
 
 FieldScene ReadFieldScene(const TomlReader& r, const toml::table& root) {

@@ -24,11 +24,8 @@ namespace {
 using Run = vivp::testing::CliRun;
 using vivp::testing::Lines;
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() /
-                 ("vivp_field_cli_" + std::to_string(getpid()));
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() { fs::remove_all(dir); }
+struct Scratch : vivp::testing::ScratchDirectory {
+  Scratch() : ScratchDirectory("vivp_field_cli_") {}
   // Writes `text` to NAME.toml and runs it into NAME.out.
   Run RunScene(const std::string& name, const std::string& text,
                const std::string& flags = "") const {
