@@ -32,6 +32,24 @@ nlohmann::json StudyJson(const ConvergeOptions& o,
           {"t_end", o.t_end},        {"slab_points", slab_points}};
 }
 
+std::string ErrorCell(bool converged, double e) {
+  std::ostringstream s;
+  if (converged)
+    s << std::scientific << std::setprecision(2) << e;
+  else
+    s << "-";
+  return s.str();
+}
+
+std::string OrderCell(double v, int converged) {
+  // NaN when fewer than two errors lie above round-off (e.g. free fall
+  // with SBP42, exact on parabolas): say so instead of "nan".
+  if (std::isnan(v)) return converged < 2 ? "n/a" : "round-off";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << v;
+  return s.str();
+}
+
 nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
   return {{"x", JsonNumber(o.x)},
           {"v", JsonNumber(o.v)},
@@ -146,14 +164,7 @@ bool PrintConvergenceTable(std::ostream& human, const ConvergeOptions& o,
     // A run that did not converge has no errors to speak of: a march that
     // stopped in its first window would show the untouched zeros of its end
     // state, a global solve the errors of its last iterate.
-    auto error = [&](double e) {
-      std::ostringstream s;
-      if (r.converged)
-        s << std::scientific << std::setprecision(2) << e;
-      else
-        s << "-";
-      return s.str();
-    };
+    auto error = [&](double e) { return ErrorCell(r.converged, e); };
     human << std::setw(7) << r.points << std::scientific << std::setprecision(2)
           << std::setw(11) << r.dt << std::setw(11) << error(r.err_x)
           << std::setw(11) << error(r.err_v) << std::setw(11)
@@ -174,12 +185,7 @@ void PrintFittedOrders(std::ostream& human,
   // free fall with SBP42, exact on parabolas): say so instead of "nan".
   int converged = 0;
   for (const auto& r : study.rows) converged += r.converged ? 1 : 0;
-  auto order = [&](double v) {
-    if (std::isnan(v)) return std::string(converged < 2 ? "n/a" : "round-off");
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(2) << v;
-    return s.str();
-  };
+  auto order = [&](double v) { return OrderCell(v, converged); };
   auto orders = [&](const auto& f) {
     return "x " + order(f.x) + ", Dx " + order(f.v) + ", x+M⁻¹λ4 " +
            order(f.x_corrected) + ", −λ3 " + order(f.p_corrected);

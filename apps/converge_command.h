@@ -34,6 +34,13 @@ struct ConvergeOptions {
   bool points_given = false;
 };
 
+// The cells of a study's table: an error in two significant digits, "-"
+// for a run that did not converge (it has no error to speak of); an order
+// in two decimals, "n/a" with fewer than two converged runs and
+// "round-off" when the errors are all at round-off.
+std::string ErrorCell(bool converged, double e);
+std::string OrderCell(double v, int converged);
+
 // A study's fitted orders, and one row of a study over grid sizes, as the
 // JSON of `vivp converge` has them.
 nlohmann::json OrdersJson(const studies::ConvergenceOrders& o);

@@ -85,22 +85,6 @@ std::string Cell(const std::string& text, int width = 11) {
   return std::string(std::size_t(std::max(width - chars, 0)), ' ') + text;
 }
 
-std::string FieldError(const studies::FieldConvergenceRow& r, double e) {
-  std::ostringstream s;
-  if (r.converged)
-    s << std::scientific << std::setprecision(2) << e;
-  else
-    s << "-";
-  return s.str();
-}
-
-std::string FieldOrder(double v, int converged) {
-  if (std::isnan(v)) return converged < 2 ? "n/a" : "round-off";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(2) << v;
-  return s.str();
-}
-
 // The table and the fitted orders; returns whether every solve converged.
 bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
                      const studies::FieldStudyOptions& so,
@@ -119,19 +103,20 @@ bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
     human << std::setw(7) << r.points << std::setw(7) << r.space_points
           << std::scientific << std::setprecision(2) << std::setw(11)
           << (study.in_space ? r.dx : r.dt) << std::setw(11)
-          << FieldError(r, r.err_x) << std::setw(11) << FieldError(r, r.err_v)
-          << std::setw(11) << FieldError(r, r.err_x_corrected) << std::setw(11)
-          << FieldError(r, r.err_p_corrected) << std::defaultfloat
+          << ErrorCell(r.converged, r.err_x) << std::setw(11)
+          << ErrorCell(r.converged, r.err_v) << std::setw(11)
+          << ErrorCell(r.converged, r.err_x_corrected) << std::setw(11)
+          << ErrorCell(r.converged, r.err_p_corrected) << std::defaultfloat
           << std::setw(6) << r.iterations << std::setw(10)
           << std::setprecision(3) << r.seconds
           << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
     converged += r.converged ? 1 : 0;
   }
   auto orders = [&](const studies::ConvergenceOrders& f) {
-    return "φ " + FieldOrder(f.x, converged) + ", D_tφ " +
-           FieldOrder(f.v, converged) + ", φ+M⁻¹λ4 " +
-           FieldOrder(f.x_corrected, converged) + ", −λ3 " +
-           FieldOrder(f.p_corrected, converged);
+    return "φ " + OrderCell(f.x, converged) + ", D_tφ " +
+           OrderCell(f.v, converged) + ", φ+M⁻¹λ4 " +
+           OrderCell(f.x_corrected, converged) + ", −λ3 " +
+           OrderCell(f.p_corrected, converged);
   };
   if (study.in_space)
     human << "fitted order (dx = " << (p.periodic ? "L/Nx" : "L/(Nx−1)")
