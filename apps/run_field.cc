@@ -2,6 +2,7 @@
 // diagnostics.csv, the plots and summary.json (docs/field_scenes.md §5).
 #include "apps/run_field.h"
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -116,10 +117,18 @@ void WriteDiagnostics(const fs::path& dir, const scene::FieldRun& run,
 nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
   nlohmann::json d = nlohmann::json::object();
   for (std::size_t c = 0; c < run.columns.size(); ++c) {
-    ColumnStats stats;
-    for (double v : run.values[c]) stats.Add(v);
-    nlohmann::json j = stats.Json();
     const std::string& name = run.columns[c];
+    const auto& values = run.values[c];
+    // Statistics would skip a NaN; say that there is one instead.
+    if (!std::all_of(values.begin(), values.end(),
+                     [](double v) { return std::isfinite(v); })) {
+      d[name] = {{"finite", false}};
+      human << "  " << name << ": not finite at some slices\n";
+      continue;
+    }
+    ColumnStats stats;
+    for (double v : values) stats.Add(v);
+    nlohmann::json j = stats.Json();
     if (name == "error") {
       j = {{"max", stats.max},
            {"final", stats.last},

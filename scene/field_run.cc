@@ -19,8 +19,11 @@ double SliceError(const FieldScene& s, const std::vector<double>& x, double t,
   double phi[2], phi_t[2], worst = 0;
   for (std::size_t j = 0; j < x.size(); ++j) {
     s.exact(t, x[j], phi, phi_t);
-    for (int a = 0; a < m; ++a)
-      worst = std::max(worst, std::abs(slice[j * m + a] - phi[a]));
+    for (int a = 0; a < m; ++a) {
+      const double e = std::abs(slice[j * m + a] - phi[a]);
+      if (std::isnan(e)) return e;  // no exact value: no error, not 0
+      worst = std::max(worst, e);
+    }
   }
   return worst;
 }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -48,11 +49,15 @@ struct MovingGaussian {
     // Images beyond 40σ of both x − ct and x + ct contribute below 1e-300.
     const double reach = 40 * width + c * std::abs(t);
     auto family = [&](double xi, double v) {
-      const long long first =
-          static_cast<long long>(std::ceil((x - xi - reach) / period));
-      const long long last =
-          static_cast<long long>(std::floor((x - xi + reach) / period));
-      for (long long k = first; k <= last; ++k) add(xi + double(k) * period, v);
+      const double first = std::ceil((x - xi - reach) / period);
+      const double last = std::floor((x - xi + reach) / period);
+      // A pulse far wider than the domain, or a time far beyond it, would
+      // take more images than is sensible: no value rather than a wrong one.
+      if (!(last - first < 1e5)) {
+        phi = phi_t = std::numeric_limits<double>::quiet_NaN();
+        return;
+      }
+      for (double k = first; k <= last; ++k) add(xi + k * period, v);
     };
     family(center, velocity);
     if (images == Images::kMirrored) family(2 * x0 - center, -velocity);
