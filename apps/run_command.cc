@@ -1,8 +1,6 @@
 // `vivp run [SCENE] [--out DIR] [--force]` and `vivp scene check FILE`: a
 // scene file solved end to end, with its trajectory, summary, diagnostics and
 // plots written into one directory (README "Scenes").
-#include <unistd.h>
-
 #include <chrono>
 #include <iostream>
 #include <sstream>
@@ -123,8 +121,9 @@ Runner AddRunCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run",
       "Solve a scene (a TOML file of effects, initial data, time span, method "
-      "and outputs); without SCENE the default scene (Rothkopf & Nordström "
-      "2023, Fig. 14)");
+      "and outputs) or a field scene ([field] and [[term]] tables, "
+      "docs/field_scenes.md); without SCENE the default scene (Rothkopf & "
+      "Nordström 2023, Fig. 14)");
   cmd->add_option("scene", o->scene, "scene file (TOML)");
   cmd->add_option("--out", o->out,
                   "output directory (default: SCENE-STEM.out, default.out)");
