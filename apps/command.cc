@@ -1,5 +1,7 @@
 #include "apps/command.h"
 
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -41,6 +43,22 @@ void CheckOutputFile(const fs::path& file, bool force) {
     throw UsageError("output file " + file.string() +
                      " exists; choose another name or pass --force to "
                      "overwrite it");
+}
+
+fs::path MakeStagingDirectory(const fs::path& out) {
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : ".";
+  fs::create_directories(parent);
+  const fs::path staging = parent / ("." + out.filename().string() +
+                                     ".partial-" + std::to_string(getpid()));
+  fs::remove_all(staging);
+  fs::create_directories(staging);
+  return staging;
+}
+
+void MoveInto(const fs::path& staging, const fs::path& out) {
+  fs::create_directories(out);
+  for (const auto& entry : fs::directory_iterator(staging))
+    fs::rename(entry.path(), out / entry.path().filename());
 }
 
 CLI::Validator FiniteNumber() {

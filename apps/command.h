@@ -35,6 +35,22 @@ Runner AddSceneCommand(CLI::App& app);
 void CheckOutputDirectory(const std::filesystem::path& dir, bool force);
 // Same for a single output file.
 void CheckOutputFile(const std::filesystem::path& file, bool force);
+// An empty staging directory beside `out`, unique to this process: a run
+// writes there and MoveInto moves its files into `out` once all are
+// written, so a failure leaves nothing behind and a user's other files in
+// `out` stay untouched.
+std::filesystem::path MakeStagingDirectory(const std::filesystem::path& out);
+void MoveInto(const std::filesystem::path& staging,
+              const std::filesystem::path& out);
+// Removes a staging directory when it goes out of scope (after MoveInto,
+// an empty one).
+struct StagingCleanup {
+  std::filesystem::path dir;
+  ~StagingCleanup() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
 
 // A JSON number, or null for a non-finite value (a fitted order that does
 // not exist, an error that overflowed): JSON has no NaN or infinity.

@@ -2,6 +2,7 @@
 // over a list of grid sizes (Rothkopf & Nordström 2023, Figs. 6-13).
 #include "apps/converge_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -12,6 +13,7 @@
 #include "apps/command.h"
 #include "core/sbp/builder.h"
 #include "solvers/variational/solver_choice.h"
+#include "studies/field_problems.h"
 #include "studies/registry.h"
 
 namespace vivp::apps {
@@ -30,11 +32,51 @@ nlohmann::json StudyJson(const ConvergeOptions& o,
           {"t_end", o.t_end},        {"slab_points", slab_points}};
 }
 
-namespace {
+std::string ErrorCell(bool converged, double e) {
+  std::ostringstream s;
+  if (converged)
+    s << std::scientific << std::setprecision(2) << e;
+  else
+    s << "-";
+  return s.str();
+}
 
-std::vector<long long> ParsePoints(const std::string& list) {
+std::string OrderCell(double v, int converged) {
+  // NaN when fewer than two errors lie above round-off (e.g. free fall
+  // with SBP42, exact on parabolas): say so instead of "nan".
+  if (std::isnan(v)) return converged < 2 ? "n/a" : "round-off";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << v;
+  return s.str();
+}
+
+nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
+  return {{"x", JsonNumber(o.x)},
+          {"v", JsonNumber(o.v)},
+          {"x_corrected", JsonNumber(o.x_corrected)},
+          {"p_corrected", JsonNumber(o.p_corrected)}};
+}
+
+nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r) {
+  return {{"points", r.points},
+          {"dt", r.dt},
+          {"dt_true", r.dt_true},
+          {"err_x", JsonNumber(r.err_x)},
+          {"err_v", JsonNumber(r.err_v)},
+          {"err_x_corrected", JsonNumber(r.err_x_corrected)},
+          {"err_p_corrected", JsonNumber(r.err_p_corrected)},
+          {"error_estimate", JsonNumber(r.error_estimate)},
+          {"iterations", r.iterations},
+          {"fallbacks", r.fallbacks},
+          {"seconds", r.seconds},
+          {"converged", r.converged},
+          {"status", r.reason}};
+}
+
+std::vector<long long> ParsePoints(const std::string& list,
+                                   const std::string& flag) {
   return ParseList<long long>(
-      list, "--points", "whole numbers", "16,32,64",
+      list, flag, "whole numbers", "16,32,64",
       [](const std::string& item) -> std::optional<long long> {
         std::size_t used = 0;
         long long v = 0;
@@ -48,12 +90,7 @@ std::vector<long long> ParsePoints(const std::string& list) {
       });
 }
 
-nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
-  return {{"x", JsonNumber(o.x)},
-          {"v", JsonNumber(o.v)},
-          {"x_corrected", JsonNumber(o.x_corrected)},
-          {"p_corrected", JsonNumber(o.p_corrected)}};
-}
+namespace {
 
 // The solver of --solver and its options.
 variational::SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
@@ -89,7 +126,7 @@ ConvergeOptions Resolved(const ConvergeOptions& o,
 // The grid sizes of --points. Every grid is checked before any work, so
 // that a bad size is the user's error (exit 2), not a study cut short.
 std::vector<long long> CheckedGridSizes(const ConvergeOptions& o) {
-  const std::vector<long long> points = ParsePoints(o.points);
+  const std::vector<long long> points = ParsePoints(o.points, "--points");
   for (long long n : points) {
     try {
       sbp::MakeOperator<double>(o.op, n, 0.0, o.t_end);
@@ -127,14 +164,7 @@ bool PrintConvergenceTable(std::ostream& human, const ConvergeOptions& o,
     // A run that did not converge has no errors to speak of: a march that
     // stopped in its first window would show the untouched zeros of its end
     // state, a global solve the errors of its last iterate.
-    auto error = [&](double e) {
-      std::ostringstream s;
-      if (r.converged)
-        s << std::scientific << std::setprecision(2) << e;
-      else
-        s << "-";
-      return s.str();
-    };
+    auto error = [&](double e) { return ErrorCell(r.converged, e); };
     human << std::setw(7) << r.points << std::scientific << std::setprecision(2)
           << std::setw(11) << r.dt << std::setw(11) << error(r.err_x)
           << std::setw(11) << error(r.err_v) << std::setw(11)
@@ -155,12 +185,7 @@ void PrintFittedOrders(std::ostream& human,
   // free fall with SBP42, exact on parabolas): say so instead of "nan".
   int converged = 0;
   for (const auto& r : study.rows) converged += r.converged ? 1 : 0;
-  auto order = [&](double v) {
-    if (std::isnan(v)) return std::string(converged < 2 ? "n/a" : "round-off");
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(2) << v;
-    return s.str();
-  };
+  auto order = [&](double v) { return OrderCell(v, converged); };
   auto orders = [&](const auto& f) {
     return "x " + order(f.x) + ", Dx " + order(f.v) + ", x+M⁻¹λ4 " +
            order(f.x_corrected) + ", −λ3 " + order(f.p_corrected);
@@ -180,20 +205,7 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
                                     const studies::NamedProblem& problem,
                                     const studies::ConvergenceStudy& study) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : study.rows)
-    rows.push_back({{"points", r.points},
-                    {"dt", r.dt},
-                    {"dt_true", r.dt_true},
-                    {"err_x", JsonNumber(r.err_x)},
-                    {"err_v", JsonNumber(r.err_v)},
-                    {"err_x_corrected", JsonNumber(r.err_x_corrected)},
-                    {"err_p_corrected", JsonNumber(r.err_p_corrected)},
-                    {"error_estimate", JsonNumber(r.error_estimate)},
-                    {"iterations", r.iterations},
-                    {"fallbacks", r.fallbacks},
-                    {"seconds", r.seconds},
-                    {"converged", r.converged},
-                    {"status", r.reason}});
+  for (const auto& r : study.rows) rows.push_back(ConvergenceRowJson(r));
   nlohmann::json j = StudyJson(o, problem, o.slab_points);
   j["rows"] = rows;
   j["orders"] = OrdersJson(study.orders);
@@ -204,6 +216,19 @@ nlohmann::json ConvergenceStudyJson(const ConvergeOptions& o,
 int RunConverge(const ConvergeOptions& given) {
   if (!given.json.empty() && given.json != "-")
     CheckOutputFile(given.json, given.force);
+  if (!given.field.empty()) return RunFieldConverge(given);
+  if (given.problem.empty())
+    throw UsageError(
+        "--problem NAME or --field NAME is required; point-mechanics "
+        "problems: " +
+        studies::ProblemNameList() +
+        "; field problems: " + studies::FieldProblemNameList());
+  for (const char* flag : {"--space-points", "--space-order"})
+    if (std::find(given.flags_given.begin(), given.flags_given.end(), flag) !=
+        given.flags_given.end())
+      throw UsageError(std::string(flag) +
+                       " applies to --field problems only; drop it or use "
+                       "--field NAME");
   const studies::NamedProblem& problem = studies::FindProblem(given.problem);
   const variational::SolveOptions options = ConvergeSolveOptions(given);
   const ConvergeOptions o = Resolved(given, options);
@@ -236,9 +261,14 @@ Runner AddConvergeCommand(CLI::App& app) {
       "converge",
       "Errors at t_end and fitted orders of the variational solver over grid "
       "sizes");
-  cmd->add_option("--problem", o->problem,
-                  "problem: " + studies::ProblemNameList())
-      ->required();
+  CLI::Option* problem = cmd->add_option(
+      "--problem", o->problem, "problem: " + studies::ProblemNameList());
+  CLI::Option* field = cmd->add_option(
+      "--field", o->field,
+      "field problem (instead of --problem): " +
+          studies::FieldProblemNameList() +
+          "; its --points default to 17,33,65,129 (docs/field_scenes.md §7)");
+  problem->excludes(field);
   std::vector<std::string> names(sbp::kOperatorNames.begin(),
                                  sbp::kOperatorNames.end());
   cmd->add_option("--operator", o->op, "SBP operator")
@@ -270,8 +300,20 @@ Runner AddConvergeCommand(CLI::App& app) {
           ->check(WholeNumberAtLeast(0, ">= 0 (0: one global solve)"));
   cmd->add_flag("--extended-residual", o->extended_residual,
                 "reduced Newton: refinement residual in long double");
-  return [o, slab] {
+  cmd->add_option("--space-points", o->space_points,
+                  "--field: spatial points, or a comma-separated list for "
+                  "orders in Δx at one --points (default: the problem's)");
+  cmd->add_option("--space-order", o->space_order,
+                  "--field: order 2, 4, 6, 8 of the spatial operator "
+                  "(periodic differences, or sbp21 … sbp84 on an interval; "
+                  "default: the problem's)")
+      ->check(WholeNumberAtLeast(2, ">= 2 (2, 4, 6 or 8)"));
+  return [o, slab, points, cmd] {
     o->slab_points_given = slab->count() > 0;
+    o->points_given = points->count() > 0;
+    for (const char* flag : {"--tolerance", "--solver", "--extended-residual",
+                             "--space-points", "--space-order"})
+      if (cmd->get_option(flag)->count() > 0) o->flags_given.push_back(flag);
     return RunConverge(*o);
   };
 }

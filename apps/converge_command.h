@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "studies/registry.h"
 
@@ -22,7 +23,37 @@ struct ConvergeOptions {
   bool extended_residual = false;
   long long slab_points = 0;
   bool slab_points_given = false;  // --slab-points on the command line
+  // --field NAME: a field problem (studies/field_problems.h), its spatial
+  // points (a list: a study in space) and the order of its spatial operator
+  // (0: the problem's default); the point-mechanics options that were given
+  // (refused with --field) and whether --points was.
+  std::string field;
+  std::string space_points;
+  int space_order = 0;
+  std::vector<std::string> flags_given;
+  bool points_given = false;
 };
+
+// The cells of a study's table: an error in two significant digits, "-"
+// for a run that did not converge (it has no error to speak of); an order
+// in two decimals, "n/a" with fewer than two converged runs and
+// "round-off" when the errors are all at round-off.
+std::string ErrorCell(bool converged, double e);
+std::string OrderCell(double v, int converged);
+
+// A study's fitted orders, and one row of a study over grid sizes, as the
+// JSON of `vivp converge` has them.
+nlohmann::json OrdersJson(const studies::ConvergenceOrders& o);
+nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r);
+
+// The whole numbers of a comma-separated list option such as --points
+// "16,32,64"; a bad item is a UsageError naming `flag`.
+std::vector<long long> ParsePoints(const std::string& list,
+                                   const std::string& flag);
+
+// `vivp converge --field NAME`: orders in Δt, or in Δx with a list of
+// --space-points (converge_field.cc).
+int RunFieldConverge(const ConvergeOptions& o);
 
 // A line naming what the errors are measured against when the problem has
 // no closed form (a reference it computes itself); nothing otherwise.

@@ -49,14 +49,7 @@ bool PrintToleranceTable(std::ostream& human, const ConvergeOptions& o,
   bool all_converged = true;
   for (const auto& r : study.rows) {
     // A run that stopped has no end error to speak of.
-    auto error = [&](double e) {
-      std::ostringstream s;
-      if (r.converged)
-        s << std::scientific << std::setprecision(2) << e;
-      else
-        s << "-";
-      return s.str();
-    };
+    auto error = [&](double e) { return ErrorCell(r.converged, e); };
     human << std::scientific << std::setprecision(1) << std::setw(9)
           << r.tolerance << std::defaultfloat << std::setw(10) << r.points
           << std::setw(9) << r.windows << std::setw(9) << r.rejected

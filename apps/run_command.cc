@@ -1,16 +1,16 @@
 // `vivp run [SCENE] [--out DIR] [--force]` and `vivp scene check FILE`: a
 // scene file solved end to end, with its trajectory, summary, diagnostics and
 // plots written into one directory (README "Scenes").
-#include <unistd.h>
-
 #include <chrono>
 #include <iostream>
 #include <sstream>
 
 #include "apps/command.h"
+#include "apps/run_field.h"
 #include "apps/run_output.h"
 #include "apps/run_progress.h"
 #include "apps/run_sink.h"
+#include "scene/field_scene.h"
 #include "scene/run.h"
 #include "scene/scene.h"
 
@@ -34,35 +34,21 @@ fs::path RunOutputDirectory(const RunCommandOptions& o) {
              : fs::path(fs::path(o.scene).stem().string() + ".out");
 }
 
-// An empty staging directory beside `out`, unique to this process.
-fs::path MakeStagingDirectory(const fs::path& out) {
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : ".";
-  fs::create_directories(parent);
-  const fs::path staging = parent / ("." + out.filename().string() +
-                                     ".partial-" + std::to_string(getpid()));
-  fs::remove_all(staging);
-  fs::create_directories(staging);
-  return staging;
-}
-
 // Runs the scene into a staging directory beside DIR and moves the files
 // into DIR when done, so a failure leaves nothing behind and a user's other
 // files in DIR stay untouched.
 int RunScene(const RunCommandOptions& o) {
-  const scene::Scene s =
+  const scene::AnyScene any =
       o.scene.empty()
-          ? scene::ParseScene(scene::DefaultSceneText(), "<default scene>")
-          : scene::ReadScene(o.scene);
+          ? scene::ParseAnyScene(scene::DefaultSceneText(), "<default scene>")
+          : scene::ReadAnyScene(o.scene);
   const fs::path out = RunOutputDirectory(o);
   CheckOutputDirectory(out, o.force);
+  if (const auto* field = std::get_if<scene::FieldScene>(&any))
+    return RunFieldScene(*field, out, o.quiet);
+  const scene::Scene& s = std::get<scene::Scene>(any);
   const fs::path staging = MakeStagingDirectory(out);
-  struct Cleanup {
-    fs::path dir;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } cleanup{staging};
+  const StagingCleanup cleanup{staging};
 
   FileSink sink(staging);
   const auto start = std::chrono::steady_clock::now();
@@ -89,9 +75,7 @@ int RunScene(const RunCommandOptions& o) {
 
   std::ostringstream human;
   WriteSummary(staging, s, r, sink, files, warnings, total, human);
-  fs::create_directories(out);
-  for (const auto& entry : fs::directory_iterator(staging))
-    fs::rename(entry.path(), out / entry.path().filename());
+  MoveInto(staging, out);
   human << "  wrote " << out.string() << "/:";
   for (const auto& f : files) human << " " << f;
   std::cout << human.str() << "\n";
@@ -104,7 +88,10 @@ int RunScene(const RunCommandOptions& o) {
 }
 
 int CheckScene(const std::string& file) {
-  const scene::Scene s = scene::ReadScene(file);
+  const scene::AnyScene any = scene::ReadAnyScene(file);
+  if (const auto* field = std::get_if<scene::FieldScene>(&any))
+    return CheckFieldScene(*field);
+  const scene::Scene& s = std::get<scene::Scene>(any);
   std::cout << file << ": ok";
   if (!s.title.empty()) std::cout << " — " << s.title;
   std::cout << "\n  dof " << s.dof << ", order " << s.order << ", "
@@ -134,8 +121,9 @@ Runner AddRunCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run",
       "Solve a scene (a TOML file of effects, initial data, time span, method "
-      "and outputs); without SCENE the default scene (Rothkopf & Nordström "
-      "2023, Fig. 14)");
+      "and outputs) or a field scene ([field] and [[term]] tables, "
+      "docs/field_scenes.md); without SCENE the default scene (Rothkopf & "
+      "Nordström 2023, Fig. 14)");
   cmd->add_option("scene", o->scene, "scene file (TOML)");
   cmd->add_option("--out", o->out,
                   "output directory (default: SCENE-STEM.out, default.out)");
@@ -143,7 +131,7 @@ Runner AddRunCommand(CLI::App& app) {
                 "write into an existing non-empty output directory, "
                 "overwriting the files of the same names");
   cmd->add_flag("--quiet", o->quiet, "no progress line on stderr");
-  cmd->footer(scene::SchemaHelp());
+  cmd->footer(scene::SchemaHelp() + "\n" + scene::FieldSchemaHelp());
   return [o] { return RunScene(*o); };
 }
 
@@ -154,7 +142,7 @@ Runner AddSceneCommand(CLI::App& app) {
   CLI::App* check =
       cmd->add_subcommand("check", "Validate a scene file without solving it");
   check->add_option("file", *file, "scene file (TOML)")->required();
-  check->footer(scene::SchemaHelp());
+  check->footer(scene::SchemaHelp() + "\n" + scene::FieldSchemaHelp());
   auto table = std::make_shared<bool>(false);
   CLI::App* effects = cmd->add_subcommand(
       "effects", "Print the effect catalogue as the README's Markdown table");

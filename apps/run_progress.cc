@@ -11,7 +11,20 @@ namespace vivp::apps {
 
 ProgressLine::ProgressLine(const FileSink& sink, double t_start, double t_end,
                            bool show)
-    : sink_(sink), t_start_(t_start), t_end_(t_end) {
+    : ProgressLine(
+          [&sink, t_start, t_end]() -> std::string {
+            const double f = sink.fraction();
+            if (!(f > 0)) return "";
+            std::ostringstream line;
+            line << std::fixed << std::setprecision(0) << 100 * f
+                 << " % (t = " << std::setprecision(3)
+                 << t_start + f * (t_end - t_start) << " of " << t_end << "), ";
+            return line.str();
+          },
+          show) {}
+
+ProgressLine::ProgressLine(std::function<std::string()> status, bool show)
+    : status_(std::move(status)) {
   if (show && isatty(STDERR_FILENO)) thread_ = std::thread([this] { Loop(); });
 }
 
@@ -34,15 +47,9 @@ void ProgressLine::Loop() {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
             .count();
-    const double f = sink_.fraction();
+    const std::string status = status_();
     std::ostringstream line;
-    line << "\r\033[Kvivp: ";
-    if (f > 0)
-      line << std::fixed << std::setprecision(0) << 100 * f
-           << " % (t = " << std::setprecision(3)
-           << t_start_ + f * (t_end_ - t_start_) << " of " << t_end_ << "), ";
-    else
-      line << "solving, ";
+    line << "\r\033[Kvivp: " << (status.empty() ? "solving, " : status);
     line << std::fixed << std::setprecision(1) << seconds << " s";
     std::cerr << line.str() << std::flush;
     printed_ = true;

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <condition_variable>
+#include <functional>
 #include <mutex>
+#include <string>
 #include <thread>
 
 #include "apps/run_sink.h"
@@ -14,14 +16,16 @@ namespace vivp::apps {
 class ProgressLine {
  public:
   ProgressLine(const FileSink& sink, double t_start, double t_end, bool show);
+  // `status` says how far the run is ("window 3 of 40 (t = …), "), or
+  // returns "" when it cannot tell; it is called from the line's thread.
+  ProgressLine(std::function<std::string()> status, bool show);
   ~ProgressLine() { Stop(); }
   void Stop();
 
  private:
   void Loop();
 
-  const FileSink& sink_;
-  double t_start_, t_end_;
+  std::function<std::string()> status_;
   std::thread thread_;
   std::mutex mutex_;
   std::condition_variable wake_;

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "scene/registered.h"
+#include "scene/spec_table.h"
 
 namespace vivp::scene {
 
@@ -14,72 +15,10 @@ namespace {
 
 using K = ParameterKind;
 
-// The catalogue default of a parameter: its member's initializer.
-template <class E>
-std::vector<double> Fallback(const E& defaults,
-                             const problems::Parameter<E>& p) {
-  return std::visit(
-      [&](auto member) -> std::vector<double> {
-        const auto& value = defaults.*member;
-        using V = std::remove_cvref_t<decltype(value)>;
-        if constexpr (std::is_same_v<V, std::vector<double>>) {
-          if (value.empty() && p.kind == K::kVector) return {0.0};
-          return value;
-        } else {
-          return {double(value)};
-        }
-      },
-      p.member);
-}
-
-template <class E>
-EffectType TypeOf() {
-  const problems::EffectSpec<E> spec = E::Spec();
-  const E defaults{};
-  EffectType t;
-  t.name = spec.name;
-  t.formula = spec.formula;
-  for (const auto& p : spec.parameters)
-    t.parameters.push_back({p.name, p.kind, Fallback(defaults, p), p.meaning});
-  t.dissipative = problems::HasLambdaTerm<E>;
-  t.kinetic = spec.kinetic;
-  t.first_order = spec.first_order;
-  t.exclusive = spec.exclusive;
-  return t;
-}
-
-// The effect struct with the values read (every parameter with a default is
-// present; an optional one only when given).
-template <class E>
-problems::Effect Build(const ParameterValues& values) {
-  E e{};
-  for (const auto& p : E::Spec().parameters) {
-    const auto it = values.find(p.name);
-    if (it == values.end()) continue;
-    std::visit(
-        [&](auto member) {
-          auto& field = e.*member;
-          using V = std::remove_cvref_t<decltype(field)>;
-          if constexpr (std::is_same_v<V, std::vector<double>>)
-            field = it->second;
-          else if constexpr (std::is_same_v<V, bool>)
-            field = it->second.at(0) != 0;
-          else
-            field = V(it->second.at(0));
-        },
-        p.member);
-  }
-  return e;
-}
-
 // Calls f.template operator()<E>() for every alternative E of Effect.
 template <class F>
 void ForEachEffect(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    (f.template operator()<std::variant_alternative_t<I, problems::Effect>>(),
-     ...);
-  }
-  (std::make_index_sequence<std::variant_size_v<problems::Effect>>{});
+  detail::ForEachAlternative<problems::Effect>(f);
 }
 
 }  // namespace
@@ -87,7 +26,7 @@ void ForEachEffect(F&& f) {
 const std::vector<EffectType>& BuiltInEffects() {
   static const std::vector<EffectType> built_in = [] {
     std::vector<EffectType> t;
-    ForEachEffect([&]<class E>() { t.push_back(TypeOf<E>()); });
+    ForEachEffect([&]<class E>() { t.push_back(detail::TypeOf<E>()); });
     return t;
   }();
   return built_in;
@@ -141,7 +80,7 @@ std::string DescribeKind(ParameterKind kind, int dof) {
 problems::Effect MakeEffect(const EffectType& type, const ParameterValues& v) {
   std::optional<problems::Effect> made;
   ForEachEffect([&]<class E>() {
-    if (!made && E::Spec().name == type.name) made = Build<E>(v);
+    if (!made && E::Spec().name == type.name) made = detail::Build<E>(v);
   });
   if (!made)
     throw std::logic_error("effect '" + type.name +

@@ -37,10 +37,10 @@ bool SymmetricPositiveDefinite(const std::vector<double>& m, int d) {
 // messages name the parameter and the effect.
 class ParameterReader {
  public:
-  ParameterReader(const TomlReader& r, const std::string& type,
-                  const ParameterSpec& p, int dof)
+  ParameterReader(const TomlReader& r, const std::string& noun,
+                  const std::string& type, const ParameterSpec& p, int dof)
       : r_(r),
-        what_(Quote(p.name) + " of effect " + Quote(type)),
+        what_(Quote(p.name) + " of " + noun + " " + Quote(type)),
         expected_("expected " + DescribeKind(p.kind, dof) + " (" + p.meaning +
                   ")"),
         dof_(dof) {}
@@ -146,44 +146,52 @@ std::vector<double> Fallback(const ParameterSpec& p, int dof) {
   return p.fallback;
 }
 
-EffectSpec ReadEffect(const TomlReader& r, const toml::table& t,
-                      const Scene& s) {
+}  // namespace
+
+// A table naming its type among `catalogue` (an [[effect]] or a [[term]],
+// the noun of the messages) and giving that type's parameters.
+EffectSpec ReadTypedTable(const TomlReader& r, const toml::table& t,
+                          const std::vector<EffectType>& catalogue,
+                          const std::string& noun, int dof) {
   EffectSpec spec;
   spec.line = int(t.source().begin.line);
   spec.column = int(t.source().begin.column);
   std::vector<std::string> names;
-  for (const auto& type : EffectCatalogue()) names.push_back(type.name);
+  for (const auto& type : catalogue) names.push_back(type.name);
   const toml::node& type_node =
-      r.Require(t, "[effect]", "type", "type = one of " + EffectNameList());
-  const std::string type =
-      r.String(type_node, "type", "one of " + EffectNameList());
-  spec.type = FindEffectType(type);
+      r.Require(t, "[" + noun + "]", "type", "type = one of " + Join(names));
+  const std::string type = r.String(type_node, "type", "one of " + Join(names));
+  for (const auto& c : catalogue)
+    if (c.name == type) spec.type = &c;
   if (!spec.type)
     r.Fail(type_node,
-           "unknown effect type " + Quote(type) + Suggest(type, names),
-           "expected one of " + EffectNameList());
+           "unknown " + noun + " type " + Quote(type) + Suggest(type, names),
+           "expected one of " + Join(names));
   std::vector<std::string> keys = {"type"};
   for (const auto& p : spec.type->parameters) keys.push_back(p.name);
-  r.CheckKeys(t, "effect " + Quote(type), keys);
+  r.CheckKeys(t, noun + " " + Quote(type), keys);
   const int given_exclusive = int(
       std::count_if(spec.type->exclusive.begin(), spec.type->exclusive.end(),
                     [&](const std::string& k) { return t.contains(k); }));
   if (given_exclusive > 1)
     r.Fail(
         t,
-        "effect " + Quote(type) + " gives both " + Join(spec.type->exclusive),
+        noun + " " + Quote(type) + " gives both " + Join(spec.type->exclusive),
         "expected at most one of them");
   for (const auto& p : spec.type->parameters) {
     if (const toml::node* n = t.get(p.name))
-      spec.values[p.name] = ParameterReader(r, type, p, s.dof).Read(*n, p.kind);
+      spec.values[p.name] =
+          ParameterReader(r, noun, type, p, dof).Read(*n, p.kind);
     else if (!p.fallback.empty())
-      spec.values[p.name] = Fallback(p, s.dof);
+      spec.values[p.name] = Fallback(p, dof);
   }
   if (spec.type->exclusive.size() > 1 && given_exclusive == 1)
     for (const auto& k : spec.type->exclusive)
       if (!t.contains(k)) spec.values.erase(k);
   return spec;
 }
+
+namespace {
 
 // The dof fixed by [system] against the effects: a registered Lagrangian
 // fixes its own, built-in effects need one of the compiled sizes.
@@ -245,7 +253,8 @@ void ReadEffects(const TomlReader& r, const toml::table& root,
     r.Fail(*n, "'effect' must be an array of tables",
            "expected [[effect]] sections, each with type = \"...\"");
   for (const toml::node& item : *list)
-    s.effects.push_back(ReadEffect(r, *item.as_table(), s));
+    s.effects.push_back(ReadTypedTable(r, *item.as_table(), EffectCatalogue(),
+                                       "effect", s.dof));
   CheckDof(r, dof_node, s);
   // Second order when some term has kinetic energy; first order when a
   // growth term gives ẋ; neither leaves no equation of motion at all.

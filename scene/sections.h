@@ -7,6 +7,10 @@
 
 #include <toml++/toml.h>
 
+#include <functional>
+#include <string>
+#include <vector>
+
 #include "scene/scene.h"
 #include "scene/toml_reader.h"
 
@@ -23,5 +27,19 @@ void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadInitial(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadTime(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadOutput(const TomlReader& r, const toml::table& root, Scene& s);
+
+// The array of diagnostics at `n`: distinct names from `valid`, each passed
+// to `check`, which refuses one the scene cannot have at its node.
+std::vector<std::string> ReadDiagnosticList(
+    const TomlReader& r, const toml::node& n,
+    const std::vector<std::string>& valid,
+    const std::function<void(const toml::node&, const std::string&)>& check);
+
+// A table naming its type among `catalogue` (an [[effect]] or a field's
+// [[term]], the noun of the messages) and giving that type's parameters,
+// each checked against its kind (dof: the length of vector parameters).
+EffectSpec ReadTypedTable(const TomlReader& r, const toml::table& t,
+                          const std::vector<EffectType>& catalogue,
+                          const std::string& noun, int dof);
 
 }  // namespace vivp::scene::detail

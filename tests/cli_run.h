@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -46,6 +47,21 @@ inline CliRun RunVivp(const std::string& args) {
   return RunCommand(VIVP_EXE, args);
 }
 #endif
+
+// A scratch directory of this test process (PREFIX and the process id in
+// the temporary directory), removed with everything in it at the end.
+struct ScratchDirectory {
+  std::filesystem::path dir;
+  explicit ScratchDirectory(const std::string& prefix)
+      : dir(std::filesystem::temp_directory_path() /
+            (prefix + std::to_string(getpid()))) {
+    std::filesystem::create_directories(dir);
+  }
+  ~ScratchDirectory() {
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+  }
+};
 
 // Number of lines in a message.
 inline int Lines(const std::string& s) {

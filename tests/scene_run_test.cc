@@ -11,6 +11,7 @@
 
 #include "problems/cyclotron.h"
 #include "problems/pendulum.h"
+#include "scene/field_scene.h"
 #include "scene/run.h"
 #include "scene/scene.h"
 #include "solvers/steppers/integrate.h"
@@ -264,7 +265,10 @@ BOOST_AUTO_TEST_CASE(EveryShippedScene_EqualsTheApiSolveOfTheSameProblem) {
       // reader with the list, and counted as skipped.
       scene::Scene s;
       try {
-        s = scene::ReadScene(entry.path());
+        scene::AnyScene any = scene::ReadAnyScene(entry.path());
+        // Field scenes are solved end to end by field_cli_test.
+        if (!std::holds_alternative<scene::Scene>(any)) continue;
+        s = std::get<scene::Scene>(std::move(any));
       } catch (const scene::SceneError& e) {
         const std::string what = e.what();
         BOOST_TEST_REQUIRE(

@@ -56,6 +56,9 @@ struct FieldSolveOptions {
   FieldNewtonOptions newton;
   bool keep_field = true;  // every slice of φ and φ_t in FieldSolution
   bool check_resolution = true;
+  // Called after each accepted window with the windows done, their number
+  // and the time reached (a progress line; it runs on the solving thread).
+  std::function<void(int done, int total, double t)> on_window;
 };
 
 struct FieldSolution {
@@ -199,6 +202,7 @@ FieldSolution SolveField(const Density& density,
     phi = s.end.phi;
     pi = s.end.phi_t;
     t0 = t1;
+    if (options.on_window) options.on_window(int(w) + 1, int(sizes.size()), t1);
   }
   s.converged = true;
   s.message = "converged";

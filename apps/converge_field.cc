@@ -1,0 +1,179 @@
+// `vivp converge --field NAME`: the errors of φ at t = T and their fitted
+// orders in Δt over --points, or in Δx over a list of --space-points at one
+// --points (studies/field_problems.h; docs/field_scenes.md §7). The JSON has
+// the shape of the point-mechanics study: rows, orders, orders_true_dt.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "apps/command.h"
+#include "apps/converge_command.h"
+#include "core/sbp/builder.h"
+#include "solvers/fields/composed.h"
+#include "studies/field_problems.h"
+
+namespace vivp::apps {
+
+namespace {
+
+// The study's options from the command line, every value checked before
+// any work, each refusal naming its option.
+studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
+                                        const studies::FieldProblem& p) {
+  for (const auto& flag : o.flags_given)
+    if (flag == "--tolerance" || flag == "--solver" ||
+        flag == "--extended-residual")
+      throw UsageError(flag +
+                       " applies to --problem (point mechanics); a --field "
+                       "study solves with Newton and a sparse LU, on the "
+                       "grids of --points and --space-points");
+  if (!(o.t_end > 0))
+    throw UsageError("--t-end: expected a positive end time, got " +
+                     std::to_string(o.t_end));
+  studies::FieldStudyOptions so;
+  so.op = o.op;
+  so.points = o.points_given ? ParsePoints(o.points, "--points")
+                             : std::vector<long long>{17, 33, 65, 129};
+  so.space_points = o.space_points.empty()
+                        ? std::vector<long long>{p.space_points}
+                        : ParsePoints(o.space_points, "--space-points");
+  so.space_order = o.space_order > 0 ? o.space_order : p.space_order;
+  so.t_end = o.t_end;
+  so.window_points = o.slab_points;
+  if (so.space_points.size() > 1 && so.points.size() > 1)
+    throw UsageError(
+        "--space-points with a list is a study in Δx at one time grid; give "
+        "one --points value (a fine one, e.g. --points 257)");
+  if (so.space_order % 2 || so.space_order < 2 || so.space_order > 8)
+    throw UsageError("--space-order: expected 2, 4, 6 or 8, got " +
+                     std::to_string(so.space_order));
+  for (long long nx : so.space_points) {
+    try {
+      (void)studies::FieldSpace(p, so.space_order, nx);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--space-points: ") + e.what());
+    }
+  }
+  for (long long nt : so.points) {
+    try {
+      (void)sbp::MakeOperator<double>(so.op, nt, 0.0, so.t_end);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--points: ") + e.what());
+    }
+    const long long w =
+        so.window_points > 0 ? std::min(so.window_points, nt) : nt;
+    for (long long nx : so.space_points)
+      if (w * nx > fields::MaxSolvedAtOnce(so.op))
+        throw UsageError(
+            "--points " + std::to_string(nt) + " with --space-points " +
+            std::to_string(nx) + ": " + std::to_string(w * nx) +
+            " values solved at once exceed the " +
+            std::to_string(fields::MaxSolvedAtOnce(so.op)) + " allowed for " +
+            so.op + "; march in windows with --slab-points 16");
+  }
+  return so;
+}
+
+// Right-aligned in `width` columns of the terminal (UTF-8: a character
+// is one column, whatever its bytes).
+std::string Cell(const std::string& text, int width = 11) {
+  int chars = 0;
+  for (const char c : text)
+    chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return std::string(std::size_t(std::max(width - chars, 0)), ' ') + text;
+}
+
+// The table and the fitted orders; returns whether every solve converged.
+bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
+                     const studies::FieldStudyOptions& so,
+                     const studies::FieldConvergenceStudy& study) {
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  human << p.name << " (" << p.description << "), " << so.op << ", "
+        << dx.name() << " in space, t_end = " << so.t_end;
+  if (so.window_points > 0)
+    human << ", marching in windows of " << so.window_points << " points";
+  human << "\n"
+        << Cell("Nt", 7) << Cell("Nx", 7) << Cell(study.in_space ? "dx" : "dt")
+        << Cell("err φ") << Cell("err D_tφ") << Cell("err φ+λ4")
+        << Cell("err −λ3") << Cell("it", 6) << Cell("seconds", 10) << "\n";
+  int converged = 0;
+  for (const auto& r : study.rows) {
+    human << std::setw(7) << r.points << std::setw(7) << r.space_points
+          << std::scientific << std::setprecision(2) << std::setw(11)
+          << (study.in_space ? r.dx : r.dt) << std::setw(11)
+          << ErrorCell(r.converged, r.err_x) << std::setw(11)
+          << ErrorCell(r.converged, r.err_v) << std::setw(11)
+          << ErrorCell(r.converged, r.err_x_corrected) << std::setw(11)
+          << ErrorCell(r.converged, r.err_p_corrected) << std::defaultfloat
+          << std::setw(6) << r.iterations << std::setw(10)
+          << std::setprecision(3) << r.seconds
+          << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
+    converged += r.converged ? 1 : 0;
+  }
+  auto orders = [&](const studies::ConvergenceOrders& f) {
+    return "φ " + OrderCell(f.x, converged) + ", D_tφ " +
+           OrderCell(f.v, converged) + ", φ+M⁻¹λ4 " +
+           OrderCell(f.x_corrected, converged) + ", −λ3 " +
+           OrderCell(f.p_corrected, converged);
+  };
+  if (study.in_space)
+    human << "fitted order (dx = " << (p.periodic ? "L/Nx" : "L/(Nx−1)")
+          << "):   " << orders(study.orders) << "\n";
+  else
+    human << "fitted order (dt = 1/Nt):     " << orders(study.orders)
+          << "\nfitted order (dt = 1/(Nt−1)): " << orders(study.orders_true_dt)
+          << "\n";
+  if (converged < int(study.rows.size()))
+    human << "(fitted over the " << converged << " converged grids of "
+          << study.rows.size() << ")\n";
+  return converged == int(study.rows.size());
+}
+
+nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
+                              const studies::FieldStudyOptions& so,
+                              const studies::FieldConvergenceStudy& study) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : study.rows) {
+    nlohmann::json row = ConvergenceRowJson(r);
+    row["space_points"] = r.space_points;
+    row["dx"] = r.dx;
+    row["windows"] = r.windows;
+    rows.push_back(row);
+  }
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  nlohmann::json j = {{"field", p.name},
+                      {"description", p.description},
+                      {"reference", "exact"},
+                      {"operator", so.op},
+                      {"space_operator", dx.name()},
+                      {"boundary", p.periodic ? "periodic" : "natural"},
+                      {"t_end", so.t_end},
+                      {"slab_points", so.window_points},
+                      {"study", study.in_space ? "space" : "time"},
+                      {"step", study.in_space ? "dx" : "dt"},
+                      {"rows", rows},
+                      {"orders", OrdersJson(study.orders)}};
+  if (!study.in_space) j["orders_true_dt"] = OrdersJson(study.orders_true_dt);
+  return j;
+}
+
+}  // namespace
+
+int RunFieldConverge(const ConvergeOptions& o) {
+  const studies::FieldProblem& p = studies::FindFieldProblem(o.field);
+  const studies::FieldStudyOptions so = FieldOptions(o, p);
+  const studies::FieldConvergenceStudy study =
+      studies::RunFieldConvergence(p, so);
+  std::ostream& human = o.json == "-" ? std::cerr : std::cout;
+  const bool all_converged = PrintFieldStudy(human, p, so, study);
+  if (!o.json.empty()) WriteJson(o.json, FieldStudyJson(p, so, study));
+  if (!all_converged) {
+    std::cerr << "vivp: some solves did not converge (see the table)\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace vivp::apps

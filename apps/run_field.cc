@@ -1,0 +1,321 @@
+// `vivp run` on a field scene: solve, then write field.csv (or field.bin),
+// diagnostics.csv, the plots and summary.json (docs/field_scenes.md §5).
+#include "apps/run_field.h"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "apps/command.h"
+#include "apps/run_progress.h"
+#include "apps/run_sink.h"
+
+namespace vivp::apps {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Rounded(double v) {
+  std::ostringstream s;
+  s << std::setprecision(4) << v;
+  return s.str();
+}
+
+// The names of the values of one spatial point in the field files.
+std::vector<std::string> PointColumns(const scene::FieldScene& s) {
+  std::vector<std::string> c;
+  for (const char* q : {"phi", "phi_t"}) {
+    if (std::string(q) == "phi_t" && !s.output.phi_t) break;
+    for (int a = 0; a < s.components; ++a)
+      c.push_back(s.components == 1 ? q : q + std::to_string(a));
+  }
+  return c;
+}
+
+// field.csv (t, x, φ[, φ_t] per row) or field.bin (float64, slice-major);
+// returns the file's layout for summary.json.
+nlohmann::json WriteField(const fs::path& dir, const scene::FieldScene& s,
+                          const scene::FieldRun& run,
+                          const std::vector<std::size_t>& slices) {
+  const auto& sol = run.solution;
+  const int m = s.components;
+  const std::size_t n = run.x.size() * m;
+  const std::vector<std::string> columns = PointColumns(s);
+  std::vector<double> times;
+  for (std::size_t k : slices) times.push_back(sol.t[k]);
+  const bool binary = s.output.format == "binary";
+  const std::string name = binary ? "field.bin" : "field.csv";
+  std::ofstream f(dir / name, binary ? std::ios::binary : std::ios::out);
+  if (!binary) {
+    f << "t,x";
+    for (const auto& c : columns) f << "," << c;
+    f << "\n" << std::setprecision(17);
+  }
+  std::vector<double> row;
+  for (std::size_t k : slices)
+    for (std::size_t j = 0; j < run.x.size(); ++j) {
+      row.assign(sol.phi.begin() + k * n + j * m,
+                 sol.phi.begin() + k * n + (j + 1) * m);
+      if (s.output.phi_t)
+        row.insert(row.end(), sol.phi_t.begin() + k * n + j * m,
+                   sol.phi_t.begin() + k * n + (j + 1) * m);
+      if (binary) {
+        f.write(reinterpret_cast<const char*>(row.data()),
+                std::streamsize(row.size() * sizeof(double)));
+        continue;
+      }
+      f << sol.t[k] << "," << run.x[j];
+      for (double v : row) f << "," << v;
+      f << "\n";
+    }
+  if (!f) throw std::runtime_error("cannot write " + name);
+  nlohmann::json layout = {
+      {"file", name},
+      {"format", s.output.format},
+      {"slices", slices.size()},
+      {"points", run.x.size()},
+      {"values", columns},
+      {"x",
+       {{"first", s.x0}, {"step", s.Space().dx()}, {"count", run.x.size()}}},
+      {"t", times}};
+  if (binary) {
+    layout["dtype"] = "float64";
+    layout["byte_order"] =
+        std::endian::native == std::endian::little ? "little" : "big";
+    layout["shape"] = {slices.size(), run.x.size(), columns.size()};
+    layout["order"] =
+        "slice-major: value (slice·points + j)·values + column, no header";
+  } else {
+    layout["order"] = "one row per slice and point, slices in time order";
+  }
+  return layout;
+}
+
+void WriteDiagnostics(const fs::path& dir, const scene::FieldRun& run,
+                      const std::vector<std::size_t>& slices) {
+  std::ofstream f(dir / "diagnostics.csv");
+  f << "t";
+  for (const auto& c : run.columns) f << "," << c;
+  f << "\n" << std::setprecision(17);
+  for (std::size_t k : slices) {
+    f << run.solution.t[k];
+    for (const auto& v : run.values) f << "," << v[k];
+    f << "\n";
+  }
+  if (!f) throw std::runtime_error("cannot write diagnostics.csv");
+}
+
+// Each diagnostic's statistics over every slice, in the summary and on a
+// line each.
+nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
+  nlohmann::json d = nlohmann::json::object();
+  for (std::size_t c = 0; c < run.columns.size(); ++c) {
+    const std::string& name = run.columns[c];
+    const auto& values = run.values[c];
+    // Statistics would skip a NaN; say that there is one instead.
+    if (!std::all_of(values.begin(), values.end(),
+                     [](double v) { return std::isfinite(v); })) {
+      d[name] = {{"finite", false}};
+      human << "  " << name << ": not finite at some slices\n";
+      continue;
+    }
+    ColumnStats stats;
+    for (double v : values) stats.Add(v);
+    nlohmann::json j = stats.Json();
+    if (name == "error") {
+      j = {{"max", stats.max},
+           {"final", stats.last},
+           {"end_state", JsonNumber(run.end_state_error)}};
+      human << "  error against the exact solution: max " << Rounded(stats.max)
+            << ", last slice " << Rounded(stats.last)
+            << ", corrected end state " << Rounded(run.end_state_error) << "\n";
+    } else {
+      const double drift = j["max_change"].get<double>();
+      double interior = 0;
+      for (std::size_t k = 0; k < run.values[c].size(); ++k)
+        if (!run.window_end[k])
+          interior =
+              std::max(interior, std::abs(run.values[c][k] - stats.first));
+      j["relative_drift"] =
+          JsonNumber(drift / std::max(std::abs(stats.first), 1e-300));
+      j["max_change_interior"] = interior;
+      human << "  " << name << ": " << Rounded(stats.first) << " → "
+            << Rounded(stats.last) << " (max change " << Rounded(drift) << "; "
+            << Rounded(interior) << " away from the windows' last slices)\n";
+    }
+    d[name] = j;
+  }
+  return d;
+}
+
+nlohmann::json GridJson(const scene::FieldScene& s,
+                        const scene::FieldRun& run) {
+  const auto dx = s.Space();
+  const auto& sol = run.solution;
+  return {{"space",
+           {{"operator", dx.name()},
+            {"order", dx.order()},
+            {"boundary", s.boundary},
+            {"points", dx.points()},
+            {"x0", s.x0},
+            {"x1", s.x1},
+            {"dx", dx.dx()}}},
+          {"time",
+           {{"operator", s.method.op},
+            {"points", s.time_points},
+            {"t_end", s.t_end},
+            {"dt", sol.dt},
+            {"window_points", s.method.window_points},
+            {"windows", sol.windows}}}};
+}
+
+}  // namespace
+
+std::vector<std::size_t> WrittenSlices(const scene::FieldScene& s,
+                                       const scene::FieldRun& run) {
+  std::vector<std::size_t> k;
+  const std::size_t n = run.solution.t.size();
+  for (std::size_t i = 0; i < n; i += std::size_t(s.output.stride))
+    k.push_back(i);
+  if (n > 0 && k.back() != n - 1) k.push_back(n - 1);
+  return k;
+}
+
+namespace {
+
+// The solve, with the progress line of a terminal: windows done of all.
+scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
+  std::atomic<int> done{0}, total{0};
+  std::atomic<double> reached{0};
+  ProgressLine progress(
+      [&]() -> std::string {
+        if (total == 0) return "";
+        std::ostringstream line;
+        line << "window " << done << " of " << total
+             << " (t = " << std::setprecision(3) << reached.load() << " of "
+             << s.t_end << "), ";
+        return line.str();
+      },
+      !quiet);
+  return scene::RunFieldScene(s, [&](int d, int n, double t) {
+    done = d;
+    total = n;
+    reached = t;
+  });
+}
+
+// The title, the grids and the solver's account, for the reader.
+void PrintRun(std::ostream& human, const scene::FieldScene& s,
+              const fields::FieldSolution& sol) {
+  const auto dx = s.Space();
+  human << (s.title.empty() ? s.source : s.title)
+        << "\n  field: " << s.components
+        << (s.components == 1 ? " component, " : " components, ") << dx.name()
+        << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
+        << (s.boundary == "periodic" ? ")" : "]") << ", " << dx.points()
+        << " points\n  " << s.method.op << ", " << s.time_points
+        << " time points on [0, " << Rounded(s.t_end) << "]";
+  if (sol.windows > 1) human << ", " << sol.windows << " windows";
+  human << ": " << sol.message << ", " << sol.factorizations
+        << " Newton iterations, " << Rounded(sol.seconds_total) << " s\n"
+        << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
+        << Rounded(sol.limit) << ")\n";
+}
+
+nlohmann::json SolverJson(const fields::FieldSolution& sol) {
+  return {{"windows", sol.windows},
+          {"newton_iterations", sol.factorizations},
+          {"corrections", sol.corrections},
+          {"jacobian_nonzeros", sol.jacobian_nonzeros},
+          {"residual_norm", sol.residual_norm},
+          {"end_phi_estimate", sol.end.phi_estimate},
+          {"end_phi_t_estimate", sol.end.phi_t_estimate}};
+}
+
+}  // namespace
+
+int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
+  for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
+  const auto start = std::chrono::steady_clock::now();
+  const scene::FieldRun run = SolveShowingProgress(s, quiet);
+  const auto& sol = run.solution;
+  if (!sol.converged) {
+    // The grid is the scene's: refused like any other bad value.
+    if (sol.message.rfind("under-resolved", 0) == 0)
+      throw scene::SceneError(s.where_time_points + sol.message);
+    std::cerr << "vivp: the solve did not converge: " << sol.message
+              << "; nothing was written\n";
+    return 1;
+  }
+  const fs::path staging = MakeStagingDirectory(out);
+  const StagingCleanup cleanup{staging};
+  const auto slices = WrittenSlices(s, run);
+  std::vector<std::string> files = {
+      s.output.format == "binary" ? "field.bin" : "field.csv", "summary.json"};
+  const nlohmann::json layout = WriteField(staging, s, run, slices);
+  if (!run.columns.empty()) {
+    WriteDiagnostics(staging, run, slices);
+    files.push_back("diagnostics.csv");
+  }
+  std::vector<std::string> warnings;
+  for (const auto& f : WriteFieldPlots(staging, s, run, warnings))
+    files.push_back(f);
+  std::ostringstream human;
+  PrintRun(human, s, sol);
+  const nlohmann::json diagnostics = Diagnostics(run, human);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+  const nlohmann::json summary = {
+      {"scene", scene::FieldSceneJson(s)},
+      {"kind", "field"},
+      {"status", {{"converged", sol.converged}, {"message", sol.message}}},
+      {"grid", GridJson(s, run)},
+      {"resolution", {{"omega_dt", sol.omega_dt}, {"limit", sol.limit}}},
+      {"solver", SolverJson(sol)},
+      {"seconds", {{"solve", sol.seconds_total}, {"total", seconds}}},
+      {"diagnostics", diagnostics},
+      {"layout", layout},
+      {"written_slices", slices.size()},
+      {"files", files},
+      {"warnings", warnings}};
+  {
+    std::ofstream f(staging / "summary.json");
+    f << summary.dump(1) << "\n";
+    if (!f) throw std::runtime_error("cannot write summary.json");
+  }
+  MoveInto(staging, out);
+  human << "  wrote " << out.string() << "/:";
+  for (const auto& f : files) human << " " << f;
+  std::cout << human.str() << "\n";
+  for (const auto& w : warnings) std::cerr << "vivp: warning: " << w << "\n";
+  return 0;
+}
+
+int CheckFieldScene(const scene::FieldScene& s) {
+  for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
+  const auto dx = s.Space();
+  std::cout << s.source << ": ok";
+  if (!s.title.empty()) std::cout << " — " << s.title;
+  std::cout << "\n  field of " << s.components << " component(s), " << dx.name()
+            << " on [" << s.x0 << ", " << s.x1
+            << (s.boundary == "periodic" ? "), " : "], ") << dx.points()
+            << " points; " << s.terms.size() << " term(s):";
+  for (const auto& t : s.terms) std::cout << " " << t.type->name;
+  std::cout << "\n  profile " << s.initial.profile
+            << (s.exact ? " (exact solution known)" : "") << "; " << s.method.op
+            << (s.method.window_points
+                    ? ", windows of " + std::to_string(s.method.window_points)
+                    : std::string(", one global solve"))
+            << ", " << s.time_points << " points on [0, " << s.t_end << "]\n";
+  return 0;
+}
+
+}  // namespace vivp::apps

@@ -1,0 +1,34 @@
+// `vivp run` and `vivp scene check` on a field scene (scene/field_scene.h;
+// docs/field_scenes.md): the solve in memory first, then the space-time
+// field, the diagnostics, the plots and summary.json written into a staging
+// directory and moved into the output directory. An under-resolved grid is
+// refused (exit status 2) and a failed solve reported (exit status 1), both
+// before anything is written. Private to apps/.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/field_run.h"
+#include "scene/field_scene.h"
+
+namespace vivp::apps {
+
+int RunFieldScene(const scene::FieldScene& s, const std::filesystem::path& out,
+                  bool quiet);
+int CheckFieldScene(const scene::FieldScene& s);
+
+// The slices of a run that are written: every stride-th and the last.
+std::vector<std::size_t> WrittenSlices(const scene::FieldScene& s,
+                                       const scene::FieldRun& run);
+
+// The heat map, snapshots and one curve per diagnostic against time
+// (report/field_plots.h); a plot that cannot be drawn is a warning. Returns
+// the PNGs drawn.
+std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
+                                         const scene::FieldScene& s,
+                                         const scene::FieldRun& run,
+                                         std::vector<std::string>& warnings);
+
+}  // namespace vivp::apps

@@ -1,0 +1,153 @@
+// A field density composed of named terms chosen at run time (a field
+// scene's [[term]] tables), the field counterpart of problems/composed.h:
+//
+//   using namespace vivp::fields;
+//   ComposedDensity<1> sine_gordon{{terms::Kinetic{}, terms::Gradient{},
+//                                   terms::SineGordon{}}};
+//
+// L is the sum of the listed terms only, so a term that is not listed costs
+// nothing. Each term is L(φ, φ_t, φ_x) for M components, templated on the
+// scalar, and the sum is a density of densities.h: the pointwise automatic
+// differentiation of the field system applies unchanged. Spec() is the
+// term's scene name, formula and parameter table (effect_parameters.h), from
+// which the scene reader and its help are generated. With |φ|² = Σ_a φ_a²:
+//
+//   kinetic       L += ½|φ_t|²
+//   gradient      L −= ½c²|φ_x|²
+//   mass          L −= ½m²|φ|²
+//   sine_gordon   L −= 1 − cos φ              (one component)
+//   phi4          L −= ¼λ(|φ|² − v²)²
+//   quartic       L −= ¼λ|φ|⁴
+//
+// kinetic + gradient + mass is Klein–Gordon, + sine_gordon sine-Gordon,
+// + phi4 the φ⁴ theory, and with two components kinetic + gradient + mass +
+// quartic the complex |φ|⁴ field (densities.h, which these reproduce).
+#pragma once
+
+#include <cmath>
+#include <variant>
+#include <vector>
+
+#include "problems/effect_parameters.h"
+
+namespace vivp::fields {
+
+namespace terms {
+
+using problems::EffectSpec;
+using problems::ParameterKind;
+
+namespace detail {
+template <int M, class T>
+T Square(const T* a) {
+  T s = a[0] * a[0];
+  for (int c = 1; c < M; ++c) s += a[c] * a[c];
+  return s;
+}
+}  // namespace detail
+
+struct Kinetic {
+  static EffectSpec<Kinetic> Spec() {
+    return {"kinetic", "L += ½|φ_t|²", {}, /*kinetic=*/true};
+  }
+  template <int M, class T>
+  T Density(const T*, const T* phi_t, const T*) const {
+    return T(0.5) * detail::Square<M>(phi_t);
+  }
+};
+
+struct Gradient {
+  double c = 1.0;
+  static EffectSpec<Gradient> Spec() {
+    return {"gradient",
+            "L −= ½c²|φ_x|²",
+            {{"c", ParameterKind::kPositive, &Gradient::c, "wave speed c"}}};
+  }
+  template <int M, class T>
+  T Density(const T*, const T*, const T* phi_x) const {
+    return T(-0.5 * c * c) * detail::Square<M>(phi_x);
+  }
+};
+
+struct Mass {
+  double m = 1.0;
+  static EffectSpec<Mass> Spec() {
+    return {"mass",
+            "L −= ½m²|φ|²",
+            {{"m", ParameterKind::kNonNegative, &Mass::m, "mass m"}}};
+  }
+  template <int M, class T>
+  T Density(const T* phi, const T*, const T*) const {
+    return T(-0.5 * m * m) * detail::Square<M>(phi);
+  }
+};
+
+// Units with m = c = 1 (the exact kink and breather of exact.h are those).
+struct SineGordon {
+  static EffectSpec<SineGordon> Spec() {
+    return {"sine_gordon", "L −= 1 − cos φ  (one component)", {}};
+  }
+  template <int M, class T>
+  T Density(const T* phi, const T*, const T*) const {
+    using std::cos;
+    return cos(phi[0]) - T(1.0);
+  }
+};
+
+struct Phi4 {
+  double lambda = 2.0, v = 1.0;
+  static EffectSpec<Phi4> Spec() {
+    using K = ParameterKind;
+    return {"phi4",
+            "L −= ¼λ(|φ|² − v²)²",
+            {{"lambda", K::kNonNegative, &Phi4::lambda, "coupling λ"},
+             {"v", K::kReal, &Phi4::v, "vacuum |φ| = v"}}};
+  }
+  template <int M, class T>
+  T Density(const T* phi, const T*, const T*) const {
+    const T w = detail::Square<M>(phi) - T(v * v);
+    return T(-0.25 * lambda) * w * w;
+  }
+};
+
+struct Quartic {
+  double lambda = 1.0;
+  static EffectSpec<Quartic> Spec() {
+    return {"quartic",
+            "L −= ¼λ|φ|⁴",
+            {{"lambda", ParameterKind::kNonNegative, &Quartic::lambda,
+              "coupling λ"}}};
+  }
+  template <int M, class T>
+  T Density(const T* phi, const T*, const T*) const {
+    const T r2 = detail::Square<M>(phi);
+    return T(-0.25 * lambda) * r2 * r2;
+  }
+};
+
+}  // namespace terms
+
+// Every term a field scene may list; a new term is its struct above and its
+// name here.
+using FieldTerm = std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
+                               terms::SineGordon, terms::Phi4, terms::Quartic>;
+
+template <int M>
+struct ComposedDensity {
+  static constexpr int kComponents = M;
+  std::vector<FieldTerm> terms;
+
+  template <class T>
+  T operator()(const T* phi, const T* phi_t, const T* phi_x) const {
+    T sum = T(0.0);
+    for (const FieldTerm& term : terms)
+      std::visit(
+          [&](const auto& t) {
+            sum += t.template Density<M>(phi, phi_t, phi_x);
+          },
+          term);
+    return sum;
+  }
+};
+
+}  // namespace vivp::fields

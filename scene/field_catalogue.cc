@@ -1,0 +1,142 @@
+// The names a field scene may use (its terms, profiles, diagnostics), the
+// scene's own queries, the scene as JSON and the field part of the help.
+#include <algorithm>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/sbp/builder.h"
+#include "scene/field_scene.h"
+#include "scene/spec_table.h"
+#include "scene/text.h"
+
+namespace vivp::scene {
+
+const std::vector<EffectType>& FieldTermCatalogue() {
+  static const std::vector<EffectType> terms = [] {
+    std::vector<EffectType> t;
+    detail::ForEachAlternative<fields::FieldTerm>(
+        [&]<class E>() { t.push_back(detail::TypeOf<E>()); });
+    return t;
+  }();
+  return terms;
+}
+
+fields::FieldTerm MakeFieldTerm(const EffectType& type,
+                                const ParameterValues& values) {
+  std::optional<fields::FieldTerm> made;
+  detail::ForEachAlternative<fields::FieldTerm>([&]<class E>() {
+    if (!made && E::Spec().name == type.name) made = detail::Build<E>(values);
+  });
+  if (!made)
+    throw std::logic_error("term '" + type.name + "' has no term struct");
+  return *made;
+}
+
+const std::vector<std::string>& FieldProfileNames() {
+  static const std::vector<std::string> names = {
+      "gaussian", "kink", "kink_antikink", "breather", "plane_wave", "csv"};
+  return names;
+}
+
+const std::vector<std::string>& FieldDiagnosticNames() {
+  static const std::vector<std::string> names = {"energy", "momentum", "charge",
+                                                 "error"};
+  return names;
+}
+
+bool FieldScene::Wants(const std::string& diagnostic) const {
+  return std::find(output.diagnostics.begin(), output.diagnostics.end(),
+                   diagnostic) != output.diagnostics.end();
+}
+
+sbp::SpaceDerivative<double> FieldScene::Space() const {
+  if (boundary == "periodic")
+    return sbp::SpaceDerivative<double>::Periodic(
+        space_order, int(space_points), x0, x1 - x0);
+  return sbp::SpaceDerivative<double>::Bounded(space_operator,
+                                               int(space_points), x0, x1);
+}
+
+std::vector<fields::FieldTerm> FieldScene::Terms() const {
+  std::vector<fields::FieldTerm> out;
+  for (const auto& t : terms) out.push_back(MakeFieldTerm(*t.type, t.values));
+  return out;
+}
+
+nlohmann::json FieldSceneJson(const FieldScene& s) {
+  nlohmann::json terms = nlohmann::json::array();
+  for (const auto& t : s.terms) {
+    nlohmann::json j = {{"type", t.type->name}};
+    for (const auto& [name, v] : t.values) j[name] = v.at(0);
+    terms.push_back(j);
+  }
+  nlohmann::json field = {{"components", s.components},
+                          {"domain", {s.x0, s.x1}},
+                          {"points", s.space_points},
+                          {"boundary", s.boundary}};
+  if (s.boundary == "periodic")
+    field["space_order"] = s.space_order;
+  else
+    field["space_operator"] = s.space_operator;
+  nlohmann::json initial = {{"profile", s.initial.profile},
+                            {"allow_jump", s.initial.allow_jump}};
+  for (const auto& [name, v] : s.initial.parameters) initial[name] = v;
+  if (!s.initial.file.empty()) initial["file"] = s.initial.file;
+  if (s.boundary == "periodic" && s.initial.profile != "csv")
+    initial["jump"] = s.initial.jump;
+  return {
+      {"source", s.source},
+      {"title", s.title},
+      {"field", field},
+      {"term", terms},
+      {"initial", initial},
+      {"exact", s.exact ? nlohmann::json(true) : nlohmann::json(false)},
+      {"no_exact", s.no_exact},
+      {"time", {{"end", s.t_end}, {"points", s.time_points}}},
+      {"method",
+       {{"operator", s.method.op}, {"window_points", s.method.window_points}}},
+      {"output",
+       {{"diagnostics", s.output.diagnostics},
+        {"stride", s.output.stride},
+        {"format", s.output.format},
+        {"phi_t", s.output.phi_t}}}};
+}
+
+std::string FieldSchemaHelp() {
+  std::ostringstream h;
+  h << "Field scene (TOML; a [field] table instead of [system], "
+       "docs/field_scenes.md):\n"
+       "  [field]      components = 1     1, or 2 (a complex field)\n"
+       "               domain = [x0, x1]  the spatial interval\n"
+       "               points = Nx        spatial points\n"
+       "               boundary = \"periodic\"  periodic | natural (φ_x = 0 "
+       "weakly)\n"
+       "               space_order = 8    periodic differences: 2, 4, 6, 8\n"
+       "               space_operator = \"sbp42\"  natural: "
+    << detail::Join({sbp::kOperatorNames.begin(), sbp::kOperatorNames.end()})
+    << "\n"
+       "  [[term]]     type = \"...\"       one table per density term\n"
+       "  [initial]    profile = \"...\"    "
+    << detail::Join(FieldProfileNames())
+    << ", with its parameters\n"
+       "               allow_jump = false periodic: run a profile that is "
+       "not periodic\n"
+       "  [time]       end = T, points = Nt\n"
+       "  [method]     operator = \"sbp42\", window_points = 0 (0: global)\n"
+       "  [output]     diagnostics = []   "
+    << detail::Join(FieldDiagnosticNames())
+    << "\n"
+       "               stride = 1, format = \"csv\" | \"binary\", phi_t = "
+       "true\n\n"
+       "Terms (parameter = default):\n";
+  for (const auto& t : FieldTermCatalogue()) {
+    h << "  " << t.name << ": " << t.formula;
+    for (const auto& p : t.parameters)
+      h << "; " << p.name << " = " << detail::FormatNumber(p.fallback.at(0));
+    h << "\n";
+  }
+  return h.str();
+}
+
+}  // namespace vivp::scene

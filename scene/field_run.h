@@ -1,0 +1,40 @@
+// Running a field scene: its terms become one density
+// (problems/fields/terms.h), SolveField (solvers/fields/solve.h) solves it
+// globally or marching in windows, and the diagnostics the scene lists are
+// computed at every slice from the density alone (core/action/
+// field_charges.h) and, for the error, from the profile's exact solution.
+// Nothing is written here: apps/ writes the files.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/field_scene.h"
+#include "solvers/fields/solve.h"
+
+namespace vivp::scene {
+
+struct FieldRun {
+  fields::FieldSolution solution;  // every slice kept
+  std::vector<double> x;           // the spatial grid
+  // The scene's diagnostics in its order, one value per slice of solution.t:
+  // energy, momentum, charge (∑ Hˣ of the densities) and error
+  // (max over x and components of |φ − φ_exact|).
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> values;
+  // Per slice: whether it is the last slice of a window, whose φ_t is the
+  // closure row of D_t, an order less accurate (docs/fields.md §6).
+  std::vector<char> window_end;
+  // The corrected end state against the exact solution, NaN without one.
+  double end_state_error = 0;
+};
+
+// on_window(done, total, t) after each window (see FieldSolveOptions).
+// An under-resolved grid or a failed Newton solve returns
+// solution.converged = false with SolveField's message.
+FieldRun RunFieldScene(
+    const FieldScene& scene,
+    const std::function<void(int, int, double)>& on_window = {});
+
+}  // namespace vivp::scene

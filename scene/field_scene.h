@@ -1,0 +1,124 @@
+// A field scene: a 1+1-dimensional field stated as a sum of named density
+// terms, its domain and spatial operator, an initial profile, the time grid,
+// the method and what to output (docs/field_scenes.md). A scene with a
+// [field] table is a field scene; one with [system] is a point-mechanics
+// scene (scene.h), and a file with sections of both kinds is refused.
+// Errors are SceneErrors "FILE:LINE:COL: what is wrong; what is expected".
+//
+//   title = "Sine-Gordon breather"          # optional
+//   [field]
+//   components = 1                          # 1 or 2 (a complex field)
+//   domain = [-20.0, 20.0]                  # [x0, x1]
+//   points = 200                            # spatial points
+//   boundary = "periodic"                   # periodic | natural
+//   space_order = 8                         # periodic: 2, 4, 6, 8
+//   space_operator = "sbp42"                # natural: sbp21 … sbp84
+//   [[term]]                                # one table per density term
+//   type = "kinetic"
+//   [initial]
+//   profile = "breather"                    # gaussian, kink, kink_antikink,
+//   omega = 0.5                             # breather, plane_wave, csv
+//   allow_jump = false                      # periodic: accept a jump
+//   [time]
+//   end = 6.283185307179586
+//   points = 129
+//   [method]
+//   operator = "sbp42"
+//   window_points = 16                      # 0: one global solve
+//   [output]
+//   diagnostics = ["energy", "error"]       # energy, momentum, charge, error
+//   stride = 1                              # every stride-th slice
+//   format = "csv"                          # csv | binary
+//   phi_t = true                            # write φ_t next to φ
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/sbp/space.h"
+#include "problems/fields/terms.h"
+#include "scene/scene.h"
+
+namespace vivp::scene {
+
+// φ_a(t, x) and φ_t,a(t, x) of a profile's formula, a < components.
+using FieldFormula =
+    std::function<void(double t, double x, double* phi, double* phi_t)>;
+
+struct FieldScene {
+  std::string source;  // file name, for messages
+  std::string title;
+  int components = 1;
+  double x0 = 0, x1 = 1;
+  long long space_points = 0;
+  std::string boundary = "periodic";     // periodic | natural
+  int space_order = 8;                   // periodic differences
+  std::string space_operator = "sbp42";  // natural: an SBP operator
+  std::vector<EffectSpec> terms;         // type from FieldTermCatalogue()
+  struct Initial {
+    std::string profile;
+    std::map<std::string, double> parameters;  // defaults filled in
+    std::string file;                          // csv: as resolved
+    bool allow_jump = false;
+    double jump = 0;  // periodic: |φ(x_last + Δx) − φ(x0)|, max over a
+  } initial;
+  // The initial data on the grid, value j·components + a.
+  std::vector<double> phi0, phi_t0;
+  // The exact solution when the profile has one for these terms, else empty
+  // with the reason in no_exact.
+  FieldFormula exact;
+  std::string no_exact;
+  double t_end = 1;
+  long long time_points = 0;
+  struct Method {
+    std::string op = "sbp42";
+    long long window_points = 0;  // 0: one global solve
+  } method;
+  struct Output {
+    std::vector<std::string> diagnostics;
+    long long stride = 1;
+    std::string format = "csv";
+    bool phi_t = true;
+  } output;
+  // "FILE:LINE:COL: " of [time] points, where an under-resolved grid is
+  // reported, and warnings for the reader (an accepted jump).
+  std::string where_time_points;
+  std::vector<std::string> warnings;
+
+  bool Wants(const std::string& diagnostic) const;
+  sbp::SpaceDerivative<double> Space() const;
+  // The density of the terms, for components() = M.
+  template <int M>
+  fields::ComposedDensity<M> Density() const {
+    return {Terms()};
+  }
+  std::vector<fields::FieldTerm> Terms() const;
+};
+
+// A point-mechanics or a field scene, as the file says.
+using AnyScene = std::variant<Scene, FieldScene>;
+
+AnyScene ParseAnyScene(std::string_view text, const std::string& source);
+// Reads FILE and parses it; a CSV profile's path is relative to FILE.
+AnyScene ReadAnyScene(const std::filesystem::path& file);
+
+// The scene as parsed, defaults filled in (for summary.json).
+nlohmann::json FieldSceneJson(const FieldScene& scene);
+
+// The terms a field scene may list, and the values names.
+const std::vector<EffectType>& FieldTermCatalogue();
+fields::FieldTerm MakeFieldTerm(const EffectType& type,
+                                const ParameterValues& values);
+const std::vector<std::string>& FieldProfileNames();
+const std::vector<std::string>& FieldDiagnosticNames();
+
+// The field part of `vivp run --help`.
+std::string FieldSchemaHelp();
+
+}  // namespace vivp::scene

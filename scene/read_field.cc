@@ -1,0 +1,259 @@
+// A field scene's [field], [[term]], [method], [time] and [output] tables
+// ([initial] is read_profile.cc), and the order they are read in.
+#include <algorithm>
+
+#include "core/sbp/builder.h"
+#include "scene/field_sections.h"
+#include "scene/sections.h"
+#include "scene/text.h"
+#include "solvers/fields/composed.h"
+
+namespace vivp::scene::detail {
+
+namespace {
+
+// Every slice of φ and φ_t is kept for the output: 2^24 values are 256 MB.
+constexpr long long kMaxFieldValues = 1LL << 24;
+constexpr long long kMaxSpacePoints = 1LL << 16;
+
+std::vector<std::string> OperatorNames() {
+  return {sbp::kOperatorNames.begin(), sbp::kOperatorNames.end()};
+}
+
+void ReadSpacePoints(const TomlReader& r, const toml::table& t, FieldScene& s) {
+  const toml::node& n =
+      r.Require(t, "field", "points", "points = Nx, the spatial points");
+  const bool periodic = s.boundary == "periodic";
+  const long long minimum =
+      periodic ? s.space_order + 1 : sbp::Table(s.space_operator).min_points;
+  const std::string at_least =
+      "at least " + std::to_string(minimum) +
+      (periodic
+           ? " for periodic differences of order " +
+                 std::to_string(s.space_order) + " (or a lower space_order)"
+           : " for the operator " + s.space_operator);
+  s.space_points = r.Whole(n, "points", 0, "a whole number, " + at_least);
+  if (s.space_points < minimum)
+    r.Fail(n,
+           "points = " + std::to_string(s.space_points) +
+               " is too few for the spatial operator",
+           "expected " + at_least);
+  if (s.space_points > kMaxSpacePoints)
+    r.Fail(n, "points = " + std::to_string(s.space_points) + " is too many",
+           "expected at most " + std::to_string(kMaxSpacePoints));
+  try {
+    (void)s.Space();  // any remaining refusal of the operator, at points
+  } catch (const std::invalid_argument& e) {
+    r.Fail(n, OneLine(e.what()), "expected " + at_least);
+  }
+}
+
+}  // namespace
+
+void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
+  const toml::table& t = r.Table(root, "field", true);
+  r.CheckKeys(t, "[field]",
+              {"components", "domain", "points", "boundary", "space_order",
+               "space_operator"});
+  if (const toml::node* n = t.get("components")) {
+    const long long m =
+        r.Whole(*n, "components", 1, "1 (a real field) or 2 (a complex one)");
+    if (m > 2)
+      r.Fail(*n, "components = " + std::to_string(m) + " is not supported",
+             "expected 1 (a real field) or 2 (a complex field)");
+    s.components = int(m);
+  }
+  const std::string domain = "domain = [x0, x1], two finite numbers, x0 < x1";
+  const toml::node& d = r.Require(t, "field", "domain", domain);
+  const std::vector<double> x = r.Numbers(d, "domain", 2, domain);
+  if (!(x[1] > x[0]))
+    r.Fail(d,
+           "domain = [" + FormatNumber(x[0]) + ", " + FormatNumber(x[1]) +
+               "] is empty",
+           "expected " + domain);
+  s.x0 = x[0];
+  s.x1 = x[1];
+  if (const toml::node* n = t.get("boundary"))
+    s.boundary = r.Choice(*n, "boundary", {"periodic", "natural"});
+  const bool periodic = s.boundary == "periodic";
+  if (const toml::node* n = t.get(periodic ? "space_operator" : "space_order"))
+    r.Fail(*n,
+           Quote(periodic ? "space_operator" : "space_order") +
+               " does not apply to boundary = \"" + s.boundary + "\"",
+           periodic ? "expected space_order = 2, 4, 6 or 8 for periodic "
+                      "differences, or boundary = \"natural\""
+                    : "expected space_operator = one of " +
+                          Join(OperatorNames()) + " on an interval");
+  if (const toml::node* n = t.get("space_order")) {
+    const long long q = r.Whole(*n, "space_order", 2, "2, 4, 6 or 8");
+    if (q > 8 || q % 2)
+      r.Fail(*n, "space_order = " + std::to_string(q) + " is not offered",
+             "expected 2, 4, 6 or 8");
+    s.space_order = int(q);
+  }
+  if (const toml::node* n = t.get("space_operator"))
+    s.space_operator = r.Choice(*n, "space_operator", OperatorNames());
+  ReadSpacePoints(r, t, s);
+}
+
+void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
+  const toml::node* n = root.get("term");
+  const std::string names = Join([] {
+    std::vector<std::string> v;
+    for (const auto& t : FieldTermCatalogue()) v.push_back(t.name);
+    return v;
+  }());
+  if (!n)
+    r.Fail(1, 1, "the field scene lists no density term",
+           "expected [[term]] tables with a type, one of " + names);
+  const toml::array* list = n->as_array();
+  if (!list || !list->is_array_of_tables())
+    r.Fail(*n, "'term' must be an array of tables",
+           "expected [[term]] sections, each with type = \"...\"");
+  for (const toml::node& item : *list) {
+    const toml::table& t = *item.as_table();
+    const EffectSpec spec =
+        ReadTypedTable(r, t, FieldTermCatalogue(), "term", s.components);
+    const std::string& type = spec.type->name;
+    for (const auto& e : s.terms)
+      if (e.type == spec.type)
+        r.Fail(t, "term " + Quote(type) + " is listed twice",
+               "expected each term once (one table holds its parameters)");
+    if (type == "sine_gordon" && s.components != 1)
+      r.Fail(t, "term 'sine_gordon' is for a real field, not components = 2",
+             "expected components = 1, or a 'mass', 'phi4' or 'quartic' term");
+    s.terms.push_back(spec);
+  }
+  if (std::none_of(s.terms.begin(), s.terms.end(),
+                   [](const EffectSpec& e) { return e.type->kinetic; }))
+    r.Fail(s.terms.front().line, s.terms.front().column,
+           "the terms have no kinetic energy, so φ has no time evolution",
+           "expected a 'kinetic' term (L += ½|φ_t|²)");
+}
+
+void ReadFieldMethod(const TomlReader& r, const toml::table& root,
+                     FieldScene& s) {
+  const toml::table& t = r.Table(root, "method", false);
+  r.CheckKeys(t, "[method]", {"operator", "window_points"});
+  if (const toml::node* n = t.get("operator"))
+    s.method.op = r.Choice(*n, "operator", OperatorNames());
+  if (const toml::node* n = t.get("window_points")) {
+    const long long minimum = sbp::Table(s.method.op).min_points;
+    const std::string expected = "0 (one global solve) or at least " +
+                                 std::to_string(minimum) + " for " +
+                                 s.method.op;
+    s.method.window_points = r.Whole(*n, "window_points", 0, expected);
+    if (s.method.window_points > 0 && s.method.window_points < minimum)
+      r.Fail(*n,
+             "window_points = " + std::to_string(s.method.window_points) +
+                 " is below the operator's minimum",
+             "expected " + expected);
+  }
+}
+
+void ReadFieldTime(const TomlReader& r, const toml::table& root,
+                   FieldScene& s) {
+  const toml::table& t = r.Table(root, "time", true);
+  r.CheckKeys(t, "[time]", {"end", "points"});
+  const toml::node& end =
+      r.Require(t, "time", "end", "end = T, the final time (start is 0)");
+  s.t_end = r.Number(end, "end", "a finite end time > 0");
+  if (!(s.t_end > 0))
+    r.Fail(end, "end = " + FormatNumber(s.t_end) + " is not after 0",
+           "expected end > 0 (a field scene starts at t = 0)");
+  const toml::node& points =
+      r.Require(t, "time", "points", "points = Nt, time points on [0, end]");
+  s.where_time_points = r.Where(points);
+  const long long minimum = sbp::Table(s.method.op).min_points;
+  const std::string at_least =
+      "at least " + std::to_string(minimum) + " for " + s.method.op;
+  s.time_points = r.Whole(points, "points", 0, "a whole number, " + at_least);
+  if (s.time_points < minimum)
+    r.Fail(
+        points,
+        "points = " + std::to_string(s.time_points) + " is below the minimum",
+        "expected " + at_least);
+  const long long slice = s.space_points * s.components;
+  const long long kept_slices = kMaxFieldValues / slice;
+  if (s.time_points > kept_slices)
+    r.Fail(points,
+           "points = " + std::to_string(s.time_points) + " keeps more than " +
+               std::to_string(kMaxFieldValues) + " values of φ",
+           "expected at most " + std::to_string(kept_slices) +
+               " time points on this spatial grid");
+  const long long w = s.method.window_points;
+  if (w > s.time_points) {
+    const toml::node* n = root["method"]["window_points"].node();
+    r.Fail(n ? *n : points,
+           "window_points = " + std::to_string(w) +
+               " exceeds points = " + std::to_string(s.time_points),
+           "expected window_points <= points (or 0 for one global solve)");
+  }
+  const long long at_once = (w > 0 ? w : s.time_points) * slice;
+  const long long most = fields::MaxSolvedAtOnce(s.method.op);
+  if (at_once <= most) return;
+  // The longest window of at most 16 points that fits, if any does.
+  const long long fits = std::min<long long>(16, most / slice);
+  const std::string fix =
+      fits >= minimum
+          ? "march with [method] window_points = " + std::to_string(fits)
+          : "use fewer spatial points (" + std::to_string(most / minimum) +
+                " values per slice at most for windows of " +
+                std::to_string(minimum) + ")";
+  r.Fail(w > 0 ? *root["method"]["window_points"].node() : points,
+         std::string(w > 0 ? "a window" : "one global solve") + " of " +
+             std::to_string(w > 0 ? w : s.time_points) + " × " +
+             std::to_string(slice) + " values is too large for " + s.method.op,
+         "expected at most " + std::to_string(most) +
+             " values solved at once: " + fix);
+}
+
+void ReadFieldOutput(const TomlReader& r, const toml::table& root,
+                     FieldScene& s) {
+  const toml::table& t = r.Table(root, "output", false);
+  r.CheckKeys(t, "[output]", {"diagnostics", "stride", "format", "phi_t"});
+  if (const toml::node* n = t.get("stride"))
+    s.output.stride = r.Whole(*n, "stride", 1, "a whole number >= 1");
+  if (const toml::node* n = t.get("format"))
+    s.output.format = r.Choice(*n, "format", {"csv", "binary"});
+  if (const toml::node* n = t.get("phi_t")) {
+    if (!n->is_boolean())
+      r.Fail(*n, "'phi_t' must be true or false, got " + TypeName(*n),
+             "expected phi_t = true (write φ_t next to φ) or false");
+    s.output.phi_t = *n->value<bool>();
+  }
+  if (const toml::node* n = t.get("diagnostics"))
+    s.output.diagnostics = ReadDiagnosticList(
+        r, *n, FieldDiagnosticNames(),
+        [&](const toml::node& e, const std::string& d) {
+          if (d == "charge" && s.components != 2)
+            r.Fail(e,
+                   "diagnostic 'charge' is the U(1) charge of two components",
+                   "expected components = 2, or no 'charge'");
+          if (d == "error" && !s.exact)
+            r.Fail(e,
+                   "diagnostic 'error' needs an exact solution: " + s.no_exact,
+                   "expected no 'error' for this profile and these terms");
+        });
+}
+
+FieldScene ReadFieldScene(const TomlReader& r, const toml::table& root) {
+  FieldScene s;
+  s.source = r.source();
+  r.CheckKeys(
+      root, "the top level of a field scene",
+      {"title", "field", "term", "initial", "time", "method", "output"});
+  if (const toml::node* t = root.get("title"))
+    s.title = r.String(*t, "title", "a short text");
+  ReadField(r, root, s);
+  ReadTerms(r, root, s);
+  ReadFieldMethod(r, root, s);
+  ReadFieldTime(r, root, s);
+  const std::filesystem::path base =
+      std::filesystem::path(s.source).parent_path();
+  ReadProfile(r, root, base, s);
+  ReadFieldOutput(r, root, s);
+  return s;
+}
+
+}  // namespace vivp::scene::detail

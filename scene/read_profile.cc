@@ -1,0 +1,140 @@
+// A field scene's [initial]: a named profile and its parameters (its
+// formula, and its exact solution when the terms are those it solves), or a
+// CSV file of samples; the initial data on the grid; on a periodic domain
+// the jump of the profile's periodic continuation.
+#include <ceres/jet.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "problems/fields/exact.h"
+#include "problems/fields/profiles.h"
+#include "scene/field_profile.h"
+#include "scene/field_sections.h"
+#include "scene/text.h"
+
+namespace vivp::scene::detail {
+
+namespace {
+
+// A profile's keys besides 'profile' and 'allow_jump', with defaults.
+struct ProfileKey {
+  std::string name;
+  double fallback;
+  std::string meaning;
+};
+
+const std::vector<ProfileKey>& KeysOf(const std::string& profile) {
+  static const std::map<std::string, std::vector<ProfileKey>> keys = {
+      {"gaussian",
+       {{"amplitude", 1.0, "A"},
+        {"width", 1.0, "σ > 0"},
+        {"center", 0.0, "ξ"},
+        {"velocity", 0.0, "v, φ_t = −v φ_x"}}},
+      {"kink", {{"position", 0.0, "x₀"}, {"velocity", 0.0, "v, |v| < 1"}}},
+      {"kink_antikink",
+       {{"velocity", 0.5, "v, 0 < |v| < 1"},
+        {"position", 0.0, "the collision point"},
+        {"collision_time", 0.0, "the time they meet"}}},
+      {"breather", {{"omega", 0.5, "ω, 0 < ω < 1"}, {"position", 0.0, "x₀"}}},
+      {"plane_wave", {{"k", 1.0, "wave number"}, {"amplitude", 1.0, "A"}}},
+      {"csv", {}}};
+  return keys.at(profile);
+}
+
+// Jump tolerance of a periodic continuation, relative to the profile's size:
+// far below any discretization error the scene could resolve.
+constexpr double kJumpTolerance = 1e-10;
+
+void ComputeInitialData(const TomlReader& r, const toml::node& at,
+                        const FieldFormula& formula,
+                        const sbp::SpaceDerivative<double>& dx, FieldScene& s) {
+  const int m = s.components;
+  s.phi0.assign(std::size_t(s.space_points) * m, 0.0);
+  s.phi_t0.assign(s.phi0.size(), 0.0);
+  for (int j = 0; j < dx.points(); ++j) {
+    formula(0.0, dx.x(j), &s.phi0[j * m], &s.phi_t0[j * m]);
+    for (int a = 0; a < m; ++a)
+      if (!std::isfinite(s.phi0[j * m + a]) ||
+          !std::isfinite(s.phi_t0[j * m + a]))
+        r.Fail(at,
+               "the profile " + Quote(s.initial.profile) +
+                   " is not finite at x = " + FormatNumber(dx.x(j)),
+               "expected parameters for which φ and φ_t are finite numbers");
+  }
+}
+
+// |φ(x_last + Δx) − φ(x0)| and the same of φ_t, where the periodic grid
+// continues the profile: a jump there is a discontinuity the periodic
+// differences would differentiate.
+void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
+                       const FieldFormula& formula, FieldScene& s) {
+  const int m = s.components;
+  std::vector<double> a(m), at_a(m), b(m), bt(m);
+  formula(0.0, s.x0, a.data(), at_a.data());
+  formula(0.0, s.x1, b.data(), bt.data());
+  double jump = 0, jump_t = 0, size = 1;
+  for (int c = 0; c < m; ++c) {
+    jump = std::max(jump, std::abs(b[c] - a[c]));
+    jump_t = std::max(jump_t, std::abs(bt[c] - at_a[c]));
+  }
+  for (std::size_t k = 0; k < s.phi0.size(); ++k)
+    size = std::max({size, std::abs(s.phi0[k]), std::abs(s.phi_t0[k])});
+  s.initial.jump = jump;
+  if (!(std::max(jump, jump_t) > kJumpTolerance * size)) return;
+  const std::string what =
+      "the profile " + Quote(s.initial.profile) + " is not periodic on [" +
+      FormatNumber(s.x0) + ", " + FormatNumber(s.x1) +
+      "): its periodic continuation jumps by |φ(x_last + Δx) − φ(x0)| = " +
+      FormatNumber(jump) + " (|φ_t| by " + FormatNumber(jump_t) + ")";
+  if (!s.initial.allow_jump)
+    r.Fail(at, what,
+           "expected a periodic profile, boundary = \"natural\", or "
+           "allow_jump = true in [initial] to run it anyway");
+  s.warnings.push_back(r.Where(at) + what +
+                       "; running it anyway (allow_jump = true)");
+}
+
+}  // namespace
+
+void ReadProfile(const TomlReader& r, const toml::table& root,
+                 const std::filesystem::path& base, FieldScene& s) {
+  const toml::table& t = r.Table(root, "initial", true);
+  const toml::node& p = r.Require(
+      t, "initial", "profile", "profile = one of " + Join(FieldProfileNames()));
+  s.initial.profile = r.Choice(p, "profile", FieldProfileNames());
+  std::vector<std::string> valid = {"profile", "allow_jump"};
+  for (const auto& k : KeysOf(s.initial.profile)) valid.push_back(k.name);
+  if (s.initial.profile == "csv") valid.push_back("file");
+  r.CheckKeys(t, "[initial] of profile " + Quote(s.initial.profile), valid);
+  if (const toml::node* n = t.get("allow_jump")) {
+    if (!n->is_boolean())
+      r.Fail(*n, "'allow_jump' must be true or false, got " + TypeName(*n),
+             "expected allow_jump = true to run a profile that is not "
+             "periodic on a periodic domain");
+    s.initial.allow_jump = *n->value<bool>();
+  }
+  for (const auto& k : KeysOf(s.initial.profile)) {
+    const toml::node* n = t.get(k.name);
+    s.initial.parameters[k.name] =
+        n ? r.Number(*n, k.name, "a finite number (" + k.meaning + ")")
+          : k.fallback;
+  }
+  const auto dx = s.Space();
+  if (s.initial.profile == "csv") {
+    const toml::node& f =
+        r.Require(t, "initial", "file",
+                  "file = \"samples.csv\", one row φ, φ_t per spatial point");
+    ReadProfileCsv(r, f, base, s);
+    s.no_exact = "a CSV profile has no exact solution";
+    return;
+  }
+  const ProfileFormulas formulas = MakeProfile(r, t, s);
+  ComputeInitialData(r, p, formulas.initial, dx, s);
+  if (s.boundary == "periodic") CheckPeriodicJump(r, p, formulas.initial, s);
+  s.exact = formulas.exact;
+  s.no_exact = formulas.no_exact;
+}
+
+}  // namespace vivp::scene::detail
