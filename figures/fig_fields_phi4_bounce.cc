@@ -24,7 +24,9 @@
 // last 30 time units, is the outgoing velocity.
 //
 // Usage: fig_fields_phi4_bounce [OUTPUT_DIR]
-//        fig_fields_phi4_bounce OUTPUT_DIR --scan V0 V1 DV [DX DT]
+//        fig_fields_phi4_bounce OUTPUT_DIR --scan V0 V1 DV [DX DT [W [T L]]]
+// (the scan: velocities V0, V0 + DV, … V1 on the grid Δx = DX, Δt = DT,
+// windows of W, to t = T on [−L, L); defaults 0.1, 0.04, 8, 160, 80)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -48,7 +50,7 @@ const fields::Phi4 kPhi4{.lambda = 1.0, .v = 1.0};
 constexpr double kX0 = 12;
 
 struct Grid {
-  double half_length = 64, dx = 0.1, dt = 0.04, t_end = 160;
+  double half_length = 80, dx = 0.1, dt = 0.04, t_end = 160;
   int window = 8;  // cheaper than 16 here: 29 s against 92 s a run
 };
 
@@ -82,6 +84,30 @@ double Front(const std::vector<double>& x, const double* phi, int nx) {
   return 0;
 }
 
+// Escape: φ(t, 0) positive over the last quarter and the front (the
+// antikink's zero) receding; the outgoing velocity is the least-squares
+// slope of the front over the last 30 time units.
+void Classify(Outcome& o, const std::vector<double>& front, double t_end) {
+  const std::size_t n = o.t.size(), quarter = n - n / 4;
+  bool positive = true;
+  for (std::size_t k = quarter; k < n; ++k) positive &= o.center[k] > 0;
+  double st = 0, sx = 0, stt = 0, stx = 0, m = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    if (o.t[k] >= t_end - 30) {
+      st += o.t[k];
+      sx += front[k];
+      stt += o.t[k] * o.t[k];
+      stx += o.t[k] * front[k];
+      ++m;
+    }
+  o.v_out = (m * stx - st * sx) / (m * stt - st * st);
+  o.front = front.back();
+  if (positive)
+    o.fate = o.v_out > 0.01 && o.front > 4 * std::sqrt(2.0) ? 1 : -1;
+  else
+    o.v_out = 0;  // a bion has no outgoing velocity
+}
+
 Outcome Collide(double v, const Grid& g) {
   const int nx = int(std::lround(2 * g.half_length / g.dx));
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, nx, -g.half_length,
@@ -92,12 +118,6 @@ Outcome Collide(double v, const Grid& g) {
   const auto s = fields::SolveField(kPhi4, dx, {"sbp42", nt, g.t_end, g.window},
                                     phi0, pi0);
   if (!s.converged) throw std::runtime_error(s.message);
-  std::fprintf(stderr,
-               "windows %d fact %lld corr %d asm %.1f fac %.1f sol %.1f res "
-               "%.1f tot %.1f\n",
-               s.windows, s.factorizations, s.corrections, s.seconds_assembly,
-               s.seconds_factor, s.seconds_solve, s.seconds_residual,
-               s.seconds_total);
   Outcome o;
   o.v = v;
   o.seconds = s.seconds_total;
@@ -121,25 +141,7 @@ Outcome Collide(double v, const Grid& g) {
       o.drift = std::max(o.drift, std::abs(e - e0) / e0);
     }
   }
-  // Escape: φ(t, 0) positive over the last quarter and the front receding;
-  // the outgoing velocity is the least-squares slope of the front over the
-  // last 30 time units.
-  const std::size_t n = o.t.size(), quarter = n - n / 4;
-  bool positive = true;
-  for (std::size_t k = quarter; k < n; ++k) positive &= o.center[k] > 0;
-  double st = 0, sx = 0, stt = 0, stx = 0, m = 0;
-  for (std::size_t k = 0; k < n; ++k)
-    if (o.t[k] >= g.t_end - 30) {
-      st += o.t[k];
-      sx += front[k];
-      stt += o.t[k] * o.t[k];
-      stx += o.t[k] * front[k];
-      ++m;
-    }
-  o.v_out = (m * stx - st * sx) / (m * stt - st * st);
-  o.front = front.back();
-  if (positive)
-    o.fate = o.v_out > 0.01 && o.front > 4 * std::sqrt(2.0) ? 1 : -1;
+  Classify(o, front, g.t_end);
   o.field.x = x;
   o.field.t = s.t;
   o.field.phi = s.phi;
@@ -155,18 +157,25 @@ std::string Short(double v) {
 std::string Describe(const Outcome& o) {
   char b[160];
   if (o.fate == 1)
-    std::snprintf(b, sizeof b, "v = %.4g: %d bounce%s, escape at v_out = %.3f",
-                  o.v, o.bounces, o.bounces == 1 ? "" : "s", o.v_out);
-  else
+    std::snprintf(b, sizeof b, "v = %.4g: %d bounce%s, escape at %.3f", o.v,
+                  o.bounces, o.bounces == 1 ? "" : "s", o.v_out);
+  else if (o.fate == 0)
     std::snprintf(b, sizeof b,
                   "v = %.4g: captured (bion), %d bounces by t = %g", o.v,
                   o.bounces, o.t.back());
+  else
+    std::snprintf(b, sizeof b,
+                  "v = %.4g: %d bounce%s, apart by %.1f at t = %g, receding at "
+                  "%.3f: undecided",
+                  o.v, o.bounces, o.bounces == 1 ? "" : "s", 2 * o.front,
+                  o.t.back(), o.v_out);
   return b;
 }
 
 int Scan(const std::filesystem::path& dir, int argc, char** argv) {
   if (argc < 6) {
-    std::fprintf(stderr, "usage: %s DIR --scan V0 V1 DV [DX DT]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s DIR --scan V0 V1 DV [DX DT [W [T L]]]\n",
+                 argv[0]);
     return 2;
   }
   const double v0 = std::atof(argv[3]), v1 = std::atof(argv[4]),
@@ -177,6 +186,10 @@ int Scan(const std::filesystem::path& dir, int argc, char** argv) {
     g.dt = std::atof(argv[7]);
   }
   if (argc > 8) g.window = std::atoi(argv[8]);
+  if (argc > 10) {
+    g.t_end = std::atof(argv[9]);
+    g.half_length = std::atof(argv[10]);
+  }
   std::vector<std::vector<double>> rows;
   for (double v = v0; v <= v1 + 1e-12; v += dv) {
     const Outcome o = Collide(v, g);
@@ -185,16 +198,17 @@ int Scan(const std::filesystem::path& dir, int argc, char** argv) {
     std::fflush(stdout);
     rows.push_back({v, double(o.bounces), double(o.fate), o.v_out});
   }
-  char stem[96];
-  std::snprintf(stem, sizeof stem, "fig_fields_phi4_bounce_scan_dx%g_dt%g",
-                g.dx, g.dt);
+  char stem[160];
+  std::snprintf(stem, sizeof stem,
+                "fig_fields_phi4_bounce_scan_v%g-%g_dx%g_dt%g_T%g", v0, v1,
+                g.dx, g.dt, g.t_end);
   report::Figure fig(dir, stem);
   const auto d = fig.Data(
       "table", rows, "v bounces fate(1_escaped_0_captured_-1_undecided) v_out");
   fig.script() << "set title \"φ⁴ kink–antikink: outgoing against incoming "
                   "velocity; Δx = "
                << g.dx << ", Δt = " << g.dt << ", windows of " << g.window
-               << "\\nCampbell, Schonfeld & Wingate (1983): v_c ≈ 0.2598\"\n"
+               << "\\nCampbell, Schonfeld and Wingate (1983): v_c ≈ 0.2598\"\n"
                << "set xlabel 'incoming velocity v'\n"
                << "set ylabel 'outgoing velocity (0: captured by t = "
                << g.t_end << ")'\nset key top left\nset grid\n"
@@ -217,7 +231,7 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::strcmp(argv[2], "--scan") == 0)
     return Scan(dir, argc, argv);
   const Grid g;
-  const std::vector<double> velocities = {0.18, 0.1975, 0.30};
+  const std::vector<double> velocities = {0.18, 0.198, 0.30};
   std::vector<Outcome> runs;
   std::vector<report::FieldSeries> maps;
   std::vector<report::HeatMapStyle> styles;
@@ -235,8 +249,13 @@ int main(int argc, char** argv) {
         "energy drift %.1e; %.0f s\n",
         Describe(o).c_str(), o.first_bounce, back, o.drift, o.seconds);
     maps.push_back(report::Crop(o.field, -25, 25, 0, g.t_end));
-    styles.push_back({.title = Describe(o)});
-    centers.push_back({"v = " + Short(v), o.center});
+    styles.push_back(
+        {.title = Describe(o), .max_slices = 320, .max_points = 250});
+    centers.push_back({"v = " + Short(v) +
+                           (o.fate == 1   ? ", escape"
+                            : o.fate == 0 ? ", captured"
+                                          : ", undecided"),
+                       o.center});
     table.push_back({v, double(o.bounces), double(o.fate), o.v_out,
                      o.first_bounce, back, o.drift});
   }
@@ -246,22 +265,24 @@ int main(int argc, char** argv) {
       "v bounces fate(1_escaped_0_captured_-1_undecided) v_out first_bounce_t "
       "radiation_back_t "
       "energy_drift");
-  const std::string grid =
-      "periodic [−64, 64), Δx = 0.1 (order 8), Δt = 0.04 (SBP42, windows of "
-      "8)";
+  char grid[160];
+  std::snprintf(grid, sizeof grid,
+                "periodic [−%g, %g), Δx = %g (order 8), Δt = %g (SBP42, "
+                "windows of %d)",
+                g.half_length, g.half_length, g.dx, g.dt, g.window);
   const auto heat = report::HeatMaps(
       dir, "fig_fields_phi4_bounce", maps, styles,
       "φ⁴ kink–antikink from x = ∓12: V = ¼(φ² − 1)² (λ = 1, v = 1, kink "
       "tanh(x/√2)); " +
-          grid +
-          "; |x| ≤ 25 shown\nCampbell, Schonfeld & Wingate (1983): "
+          std::string(grid) +
+          "; |x| ≤ 25 shown\nCampbell, Schonfeld and Wingate (1983): "
           "capture below v_c ≈ 0.2598 except in two-bounce windows, "
           "the first near 0.19–0.20");
   const auto center = report::Curves(
       dir, "fig_fields_phi4_bounce_center", runs.front().t, centers,
       {.title = "φ⁴ kink–antikink: φ(t, 0), a bounce is a downward zero "
                 "crossing\n" +
-                grid,
+                std::string(grid),
        .ylabel = "φ(t, 0)",
        .key = "bottom left"});
   std::printf("%s\n%s\n", heat.c_str(), center.c_str());

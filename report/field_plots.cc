@@ -104,7 +104,7 @@ void CurvesPanel(
     gp << "set logscale y\nset format y '10^{%T}'\n";
   else
     gp << "unset logscale y\nset format y '% h'\n";
-  gp << "set key " << style.key << "\nset grid\nplot ";
+  gp << "set key " << style.key << "\nset grid\nset autoscale xfix\nplot ";
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& [name, y] = curves[k];
     if (y.size() != t.size())
