@@ -172,6 +172,75 @@ std::string Describe(const Outcome& o) {
   return b;
 }
 
+// The scanned velocities where the pair escaped, as runs of neighbours:
+// "0.1925–0.2025 (2)" with the bounce counts in brackets.
+std::vector<std::string> EscapeWindows(
+    const std::vector<std::vector<double>>& rows) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < rows.size();) {
+    if (rows[i][2] != 1) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    int lo = int(rows[i][1]), hi = lo;
+    while (j + 1 < rows.size() && rows[j + 1][2] == 1) {
+      ++j;
+      lo = std::min(lo, int(rows[j][1]));
+      hi = std::max(hi, int(rows[j][1]));
+    }
+    std::string w = Short(rows[i][0]);
+    if (j > i) w += "–" + Short(rows[j][0]);
+    w += " (" + std::to_string(lo) + (hi > lo ? "–" + std::to_string(hi) : "") +
+         ")";
+    out.push_back(w);
+    i = j + 1;
+  }
+  return out;
+}
+
+// The items joined by ", ", with a line break (gnuplot's \n) every `per`.
+std::string Join(const std::vector<std::string>& items, std::size_t per) {
+  std::string s;
+  for (std::size_t k = 0; k < items.size(); ++k)
+    s += (k == 0 ? "" : k % per ? ", " : ",\\n") + items[k];
+  return s;
+}
+
+// The outgoing velocity against the incoming one, as in Campbell et al.'s
+// figures, with the escape windows in the title.
+void ScanFigure(const std::filesystem::path& dir, const Grid& g,
+                const std::vector<std::vector<double>>& rows) {
+  char stem[160];
+  std::snprintf(stem, sizeof stem,
+                "fig_fields_phi4_bounce_scan_v%g-%g_dx%g_dt%g_T%g",
+                rows.front()[0], rows.back()[0], g.dx, g.dt, g.t_end);
+  report::Figure fig(dir, stem, 1000, 700);
+  const auto d = fig.Data(
+      "table", rows, "v bounces fate(1_escaped_0_captured_-1_undecided) v_out");
+  const auto windows = EscapeWindows(rows);
+  std::printf("escapes (bounces): %s\n", Join(windows, 1000).c_str());
+  fig.script() << "set title \"φ⁴ kink–antikink, V = ¼(φ² − 1)²: outgoing "
+                  "against incoming velocity\\nperiodic [−"
+               << g.half_length << ", " << g.half_length << "), Δx = " << g.dx
+               << ", Δt = " << g.dt << " (SBP42, windows of " << g.window
+               << "), run to t = " << g.t_end
+               << "\\nescapes, bounces in brackets: " << Join(windows, 6)
+               << "\\nCampbell, Schonfeld and Wingate (1983): v_c ≈ 0.2598\"\n"
+               << "set xlabel 'incoming velocity v'\n"
+               << "set ylabel 'outgoing velocity (0: captured by t = "
+               << g.t_end << ")'\nset key top left\nset grid\n"
+               << "plot '" << d
+               << "' using 1:($3 > 0 && $2 == 1 ? $4 : 1/0) with points pt 7 "
+                  "title 'one bounce', '' using 1:($3 > 0 && $2 == 2 ? $4 : "
+                  "1/0) with points pt 5 title 'two bounces', '' using 1:($3 "
+                  "> 0 && $2 > 2 ? $4 : 1/0) with points pt 9 title 'three or "
+                  "more', '' using 1:($3 == 0 ? 0 : 1/0) with points pt 6 "
+                  "title 'captured', '' using 1:($3 < 0 ? $4 : 1/0) with "
+                  "points pt 4 title 'undecided by t_{end}'\n";
+  std::printf("%s\n", fig.Render().c_str());
+}
+
 int Scan(const std::filesystem::path& dir, int argc, char** argv) {
   if (argc < 6) {
     std::fprintf(stderr, "usage: %s DIR --scan V0 V1 DV [DX DT [W [T L]]]\n",
@@ -191,36 +260,14 @@ int Scan(const std::filesystem::path& dir, int argc, char** argv) {
     g.half_length = std::atof(argv[10]);
   }
   std::vector<std::vector<double>> rows;
-  for (double v = v0; v <= v1 + 1e-12; v += dv) {
-    const Outcome o = Collide(v, g);
+  for (int i = 0; v0 + i * dv <= v1 + 1e-12; ++i) {
+    const Outcome o = Collide(v0 + i * dv, g);
     std::printf("%s (energy drift %.1e, %.0f s)\n", Describe(o).c_str(),
                 o.drift, o.seconds);
     std::fflush(stdout);
-    rows.push_back({v, double(o.bounces), double(o.fate), o.v_out});
+    rows.push_back({o.v, double(o.bounces), double(o.fate), o.v_out});
   }
-  char stem[160];
-  std::snprintf(stem, sizeof stem,
-                "fig_fields_phi4_bounce_scan_v%g-%g_dx%g_dt%g_T%g", v0, v1,
-                g.dx, g.dt, g.t_end);
-  report::Figure fig(dir, stem);
-  const auto d = fig.Data(
-      "table", rows, "v bounces fate(1_escaped_0_captured_-1_undecided) v_out");
-  fig.script() << "set title \"φ⁴ kink–antikink: outgoing against incoming "
-                  "velocity; Δx = "
-               << g.dx << ", Δt = " << g.dt << ", windows of " << g.window
-               << "\\nCampbell, Schonfeld and Wingate (1983): v_c ≈ 0.2598\"\n"
-               << "set xlabel 'incoming velocity v'\n"
-               << "set ylabel 'outgoing velocity (0: captured by t = "
-               << g.t_end << ")'\nset key top left\nset grid\n"
-               << "plot '" << d
-               << "' using 1:($3 > 0 && $2 == 1 ? $4 : 1/0) with points pt 7 "
-                  "title 'one bounce', '' using 1:($3 > 0 && $2 == 2 ? $4 : "
-                  "1/0) with points pt 5 title 'two bounces', '' using 1:($3 "
-                  "> 0 && $2 > 2 ? $4 : 1/0) with points pt 9 title 'three or "
-                  "more', '' using 1:($3 == 0 ? 0 : 1/0) with points pt 6 "
-                  "title 'captured', '' using 1:($3 < 0 ? $4 : 1/0) with "
-                  "points pt 4 title 'undecided by t_{end}'\n";
-  std::printf("%s\n", fig.Render().c_str());
+  ScanFigure(dir, g, rows);
   return 0;
 }
 
@@ -250,7 +297,7 @@ int main(int argc, char** argv) {
         Describe(o).c_str(), o.first_bounce, back, o.drift, o.seconds);
     maps.push_back(report::Crop(o.field, -25, 25, 0, g.t_end));
     styles.push_back(
-        {.title = Describe(o), .max_slices = 320, .max_points = 250});
+        {.title = Describe(o), .max_slices = 240, .max_points = 200});
     centers.push_back({"v = " + Short(v) +
                            (o.fate == 1   ? ", escape"
                             : o.fate == 0 ? ", captured"
@@ -277,7 +324,8 @@ int main(int argc, char** argv) {
           std::string(grid) +
           "; |x| ≤ 25 shown\nCampbell, Schonfeld and Wingate (1983): "
           "capture below v_c ≈ 0.2598 except in two-bounce windows, "
-          "the first near 0.19–0.20");
+          "the first near 0.19–0.20",
+      1350, 600);
   const auto center = report::Curves(
       dir, "fig_fields_phi4_bounce_center", runs.front().t, centers,
       {.title = "φ⁴ kink–antikink: φ(t, 0), a bounce is a downward zero "

@@ -91,10 +91,11 @@ void HeatPanel(Figure& fig, const std::string& name, const FieldSeries& f,
 }
 
 // One panel of named curves y(t): axes, scale and plot command.
+// x0, x1: the horizontal range.
 void CurvesPanel(
     Figure& fig, const std::string& prefix, const std::vector<double>& t,
     const std::vector<std::pair<std::string, std::vector<double>>>& curves,
-    const CurveStyle& style) {
+    const CurveStyle& style, double x0, double x1) {
   if (curves.empty()) throw std::invalid_argument("curves: nothing to plot");
   auto& gp = fig.script();
   gp << "set title " << Quoted(style.title) << "\n"
@@ -104,7 +105,9 @@ void CurvesPanel(
     gp << "set logscale y\nset format y '10^{%T}'\n";
   else
     gp << "unset logscale y\nset format y '% h'\n";
-  gp << "set key " << style.key << "\nset grid\nset autoscale xfix\nplot ";
+  gp << "set key " << style.key << "\nset grid\n";
+  gp << "set xrange [" << x0 << ":" << x1 << "]\n";
+  gp << "plot ";
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const auto& [name, y] = curves[k];
     if (y.size() != t.size())
@@ -214,8 +217,9 @@ fs::path Curves(
     const fs::path& dir, const std::string& stem, const std::vector<double>& t,
     const std::vector<std::pair<std::string, std::vector<double>>>& curves,
     const CurveStyle& style) {
+  if (t.empty()) throw std::invalid_argument("curves: no times");
   Figure fig(dir, stem);
-  CurvesPanel(fig, "c", t, curves, style);
+  CurvesPanel(fig, "c", t, curves, style, t.front(), t.back());
   return fig.Render();
 }
 
@@ -223,15 +227,17 @@ fs::path CurvePanels(const fs::path& dir, const std::string& stem,
                      const std::vector<double>& t,
                      const std::vector<CurvePanel>& panels,
                      const std::string& title, int width, int height) {
-  if (panels.empty()) throw std::invalid_argument("curve panels: no panel");
+  if (panels.empty() || t.empty())
+    throw std::invalid_argument("curve panels: no panel or no times");
   Figure fig(dir, stem, width, height);
   auto& gp = fig.script();
   gp << "set multiplot layout " << panels.size() << ",1";
   if (!title.empty()) gp << " title " << Quoted(title);
   gp << "\n";
   for (std::size_t k = 0; k < panels.size(); ++k)
-    CurvesPanel(fig, "p" + std::to_string(k) + "c", t, panels[k].curves,
-                panels[k].style);
+    CurvesPanel(fig, "p" + std::to_string(k) + "c",
+                panels[k].t.empty() ? t : panels[k].t, panels[k].curves,
+                panels[k].style, t.front(), t.back());
   gp << "unset multiplot\n";
   return fig.Render();
 }

@@ -89,11 +89,14 @@ std::filesystem::path Curves(
     const std::vector<std::pair<std::string, std::vector<double>>>& curves,
     const CurveStyle& style = {});
 
-// Panels of curves against the same t, stacked one above the other (an
-// error above an energy drift, say); each panel has its own style.
+// Panels of curves against t, stacked one above the other (an error above
+// an energy drift, say), all over the range of t; each panel has its own
+// style, and its own times where `t` is not empty (a quantity sampled once
+// per window, say).
 struct CurvePanel {
   std::vector<std::pair<std::string, std::vector<double>>> curves;
   CurveStyle style;
+  std::vector<double> t;
 };
 std::filesystem::path CurvePanels(const std::filesystem::path& dir,
                                   const std::string& stem,
