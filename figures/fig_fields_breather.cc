@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/action/field_charges.h"
+#include "figures/field_figures.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
 #include "report/field_plots.h"
@@ -42,11 +43,6 @@ constexpr double kOmega = 0.5, kEnd = 100.0, kStep = 0.02,
 // last burst before kEnd is left out of the curve (not of the maxima).
 const int kBins = int(kEnd / kBin) + 1;
 
-struct Run {
-  int nx;
-  long long nt;
-};
-
 struct Curves {
   std::vector<double> error;     // at t = 0, kStep, 2kStep, …
   std::vector<double> envelope;  // max |E − E0| at interior slices per bin
@@ -59,7 +55,7 @@ struct Curves {
 };
 
 // Solves one grid; error and energy drift at the times of kStep.
-Curves Solve(const Run& run) {
+Curves Solve(const figures::FieldRun& run) {
   const fields::SineGordon sg;
   const fields::SineGordonBreather breather{kOmega};
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, run.nx, -20, 40);
@@ -110,29 +106,24 @@ Curves Solve(const Run& run) {
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const std::vector<Run> runs = {{200, 5001}, {400, 5001}, {200, 10001}};
+  const std::vector<figures::FieldRun> runs = {
+      {200, 5001}, {400, 5001}, {200, 10001}};
   std::vector<double> t;
   for (int i = 0; i * kStep <= kEnd + 1e-9; ++i) t.push_back(i * kStep);
   std::vector<report::CurvePanel> panels(2);
   for (int b = 0; b < kBins; ++b) panels[1].t.push_back(b * kBin);
   std::vector<Curves> c;
-  for (const Run& run : runs) {
+  for (const figures::FieldRun& run : runs) {
     c.push_back(Solve(run));
-    char key[64];
-    std::snprintf(key, sizeof key, "%d points, Δt = %g", run.nx,
-                  kEnd / double(run.nt - 1));
+    const std::string key = run.Key(kEnd);
     panels[0].curves.push_back({key, c.back().error});
     panels[1].curves.push_back({key, c.back().envelope});
     std::printf(
         "%-24s max error t ≤ 50: %.2e, at T: %.2e; max |E − E0| at interior "
         "slices %.2e, at window ends %.2e; %.1f s\n",
-        key, c.back().error50, c.back().error_end, c.back().interior_energy,
-        c.back().end_energy, c.back().seconds);
+        key.c_str(), c.back().error50, c.back().error_end,
+        c.back().interior_energy, c.back().end_energy, c.back().seconds);
   }
-  // Thick under thin, so that coinciding curves both show.
-  const std::vector<std::string> with = {"lines lw 6 lc '#fdae61'",
-                                         "lines lw 2.5 lc '#1a9641'",
-                                         "lines lw 1.5 lc '#2c7bb6'"};
   char title[2][256];
   std::snprintf(title[0], sizeof title[0],
                 "max_j |φ − φ_{exact}| per slice: ≤ %.1e on 200 points to "
@@ -151,14 +142,12 @@ int main(int argc, char** argv) {
                      .xlabel = "",
                      .ylabel = "error",
                      .log_y = true,
-                     .with = with};
+                     .with = figures::ThickUnderThin()};
   panels[1].style = {.title = title[1],
                      .ylabel = "|E(t) − E(0)|",
                      .log_y = true,
-                     .key = "bottom left",
-                     .with = {"linespoints lw 6 pt 7 ps 2 lc '#fdae61'",
-                              "linespoints lw 2.5 pt 5 lc '#1a9641'",
-                              "linespoints lw 1.5 pt 7 ps 0.6 lc '#2c7bb6'"}};
+                     .key = "center right",
+                     .with = figures::ThickUnderThin("linespoints pt 7")};
   const auto curves = report::CurvePanels(
       dir, "fig_fields_breather", t, panels,
       "sine-Gordon breather ω = 0.5 on [−20, 20), periodic order-8 "

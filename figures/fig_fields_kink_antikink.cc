@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "figures/field_figures.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
 #include "report/field_plots.h"
@@ -49,11 +50,6 @@ struct Pair {
   }
 };
 
-struct Run {
-  int nx;
-  long long nt;
-};
-
 struct Result {
   // At t = kStep, 2kStep, … (at t = 0 the data are the exact solution's).
   std::vector<double> error;
@@ -61,7 +57,7 @@ struct Result {
   double seconds = 0;
 };
 
-Result Solve(const Run& run) {
+Result Solve(const figures::FieldRun& run) {
   const fields::SineGordon sg;
   const Pair exact;
   const auto dx =
@@ -97,20 +93,18 @@ double Max(const std::vector<double>& v) {
 
 int main(int argc, char** argv) {
   const std::filesystem::path dir = argc > 1 ? argv[1] : "figures";
-  const std::vector<Run> runs = {
+  const std::vector<figures::FieldRun> runs = {
       {300, 1501}, {600, 1501}, {300, 3001}, {600, 3001}};
   std::vector<double> t;
   for (int i = 1; i * kStep <= kEnd + 1e-9; ++i) t.push_back(i * kStep);
   std::vector<std::pair<std::string, std::vector<double>>> curves;
   std::vector<Result> r;
-  for (const Run& run : runs) {
+  for (const figures::FieldRun& run : runs) {
     r.push_back(Solve(run));
-    char key[64];
-    std::snprintf(key, sizeof key, "%d points, Δt = %g", run.nx,
-                  kEnd / double(run.nt - 1));
+    const std::string key = run.Key(kEnd);
     curves.push_back({key, r.back().error});
     std::printf("%-24s max error %.2e (before the collision %.2e); %.1f s\n",
-                key, Max(r.back().error),
+                key.c_str(), Max(r.back().error),
                 Max({r.back().error.begin(),
                      r.back().error.begin() + long(kCollision / kStep) - 1}),
                 r.back().seconds);
@@ -124,14 +118,12 @@ int main(int argc, char** argv) {
                 "%.1e, %.1e (the time step's, at the collision)",
                 kVelocity, Max(r[0].error), Max(r[2].error), Max(r[1].error),
                 Max(r[3].error));
-  const auto err = report::Curves(
-      dir, "fig_fields_kink_antikink", t, curves,
-      {.title = title,
-       .ylabel = "error",
-       .log_y = true,
-       .key = "bottom right",
-       .with = {"lines lw 6 lc '#fdae61'", "lines lw 2.5 lc '#1a9641'",
-                "lines lw 1.5 lc '#2c7bb6'", "lines lw 2 lc '#7b3294'"}});
+  const auto err = report::Curves(dir, "fig_fields_kink_antikink", t, curves,
+                                  {.title = title,
+                                   .ylabel = "error",
+                                   .log_y = true,
+                                   .key = "bottom right",
+                                   .with = figures::ThickUnderThin()});
   const auto heat = report::HeatMap(
       dir, "fig_fields_kink_antikink_map",
       report::Crop(r[1].field, -15, 15, 0, kEnd),
