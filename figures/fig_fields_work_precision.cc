@@ -46,9 +46,9 @@ int main(int argc, char** argv) {
   fig.script() << "set logscale xy\nset format xy '10^{%L}'\n"
                << "set xlabel 'wall time of one run [s]'\n"
                << "set ylabel 'max |φ − exact| at t = kT/8'\n"
-               << "set title 'sine-Gordon breather ω = 0.5, [−30, 30), "
-                  "order-8 differences, T = 4π: cheapest run per target "
-                  "(Nx 300 / 600 / 900)'\n"
+               << "set title \"sine-Gordon breather ω = 0.5, [−30, 30), "
+                  "order-8 differences, T = 4π\\ncheapest run per target "
+                  "(Nx 300 / 600 / 900) and every run of the searches\"\n"
                << "set key outside right\nset grid\n"
                << "plot " << plots << "\n";
   std::cout << fig.Render().string() << "\n";
