@@ -230,6 +230,8 @@ void ScanFigure(const std::filesystem::path& dir, const Grid& g,
                << "set xlabel 'incoming velocity v'\n"
                << "set ylabel 'outgoing velocity (0: captured by t = "
                << g.t_end << ")'\nset key top left\nset grid\n"
+               << "set xrange [" << rows.front()[0] - 0.002 << ":"
+               << rows.back()[0] + 0.002 << "]\nset yrange [-0.02:*]\n"
                << "plot '" << d
                << "' using 1:($3 > 0 && $2 == 1 ? $4 : 1/0) with points pt 7 "
                   "title 'one bounce', '' using 1:($3 > 0 && $2 == 2 ? $4 : "
