@@ -21,7 +21,7 @@
 //   is the spatial grid's (the same at both Δt); on 600 points it is the
 //   time step's, largest at the collision, where φ_t peaks at 4γ.
 //
-// Usage: fig_fields_kink_antikink [OUTPUT_DIR]
+// Usage: fig_fields_kink_antikink [OUTPUT_DIR]                (about 30 s)
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
