@@ -184,7 +184,7 @@ FieldConvergenceStudy RunFieldConvergence(const FieldProblem& p,
             std::to_string(at_once) + " values solved at once (" +
             std::to_string(nt) + " × " + std::to_string(nx) + ") exceed the " +
             std::to_string(fields::MaxSolvedAtOnce(o.op)) + " of " + o.op +
-            "; march in windows (--slab-points 16)");
+            "; march in windows (window_points = 16)");
     }
   for (long long nx : o.space_points)
     for (long long nt : o.points) study.rows.push_back(Row(p, o, nt, nx));

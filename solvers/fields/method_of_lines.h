@@ -171,14 +171,23 @@ namespace detail {
 
 // One Gauss–Legendre step of (φ, v) in the Nyström form of the header.
 // Returns false when the stage iteration does not contract.
+// The Nyström coefficients of a Gauss tableau: A² for the stages and
+// bᵀA for the new φ.
+struct NystromCoefficients {
+  Eigen::MatrixXd a2;
+  Eigen::VectorXd ba;
+  explicit NystromCoefficients(const steppers::Tableau& tab)
+      : a2(tab.a * tab.a), ba(tab.a.transpose() * tab.b) {}
+};
+
 template <class Accel>
-bool GaussStep(const Accel& accel, const steppers::Tableau& tab, double h,
-               Eigen::VectorXd& phi, Eigen::VectorXd& v,
-               std::vector<Eigen::VectorXd>& stage,
+bool GaussStep(const Accel& accel, const steppers::Tableau& tab,
+               const NystromCoefficients& ny, double h, Eigen::VectorXd& phi,
+               Eigen::VectorXd& v, std::vector<Eigen::VectorXd>& stage,
                std::vector<Eigen::VectorXd>& acc) {
   const int s = tab.stages();
-  const Eigen::MatrixXd a2 = tab.a * tab.a;
-  const Eigen::VectorXd ba = tab.a.transpose() * tab.b;  // (bᵀA)_j
+  const Eigen::MatrixXd& a2 = ny.a2;
+  const Eigen::VectorXd& ba = ny.ba;
   for (int i = 0; i < s; ++i) stage[i] = phi + tab.c[i] * h * v;
   const double scale = 1 + phi.lpNorm<Eigen::Infinity>();
   double last = INFINITY;
@@ -304,12 +313,10 @@ MolSolution SolveFieldMol(const Density& density,
   } else {
     const auto tab =
         options.method == "gauss4" ? steppers::Gauss2() : steppers::Gauss3();
+    const detail::NystromCoefficients ny(tab);
     std::vector<Eigen::VectorXd> stage(tab.stages()), acc(tab.stages());
-    auto accel_vec = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
-      a_of(x, out);
-    };
     for (long long k = 1; k <= options.steps; ++k) {
-      if (!detail::GaussStep(accel_vec, tab, h, phi, v, stage, acc)) {
+      if (!detail::GaussStep(a_of, tab, ny, h, phi, v, stage, acc)) {
         std::ostringstream msg;
         msg << options.method << ": the stage iteration does not contract at "
             << "t = " << h * double(k - 1) << " (h·ω_max = " << h * omega
