@@ -24,9 +24,10 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 template <class U>
 fields::FieldSolution Solve(const auto& density, const U& u,
                             const SpaceDerivative<double>& dx,
-                            fields::FieldGrid grid) {
+                            fields::FieldGrid grid,
+                            const fields::FieldSolveOptions& options = {}) {
   auto [phi, pi] = fields::InitialData(u, dx);
-  auto s = fields::SolveField(density, dx, grid, phi, pi);
+  auto s = fields::SolveField(density, dx, grid, phi, pi, options);
   BOOST_REQUIRE_MESSAGE(s.converged, s.message);
   return s;
 }

@@ -21,7 +21,9 @@
 // j·B + i·m + a (i < Nt, m components), then λ3(j, ·) and λ4(j, ·);
 // B = (Nt + 2)·m. Rows use the same positions: the node rows, then the
 // initial value and initial velocity rows of point j. A time window is then
-// banded up to the periodic corners.
+// banded up to the periodic corners. On an interval, Dirichlet data imposed
+// by multipliers append Nt·m unknowns per Dirichlet side after the blocks
+// (field_boundary.h).
 //
 // The Jacobian is assembled pointwise: at each (i, j) the density sees φ,
 // φ_t (row i of D̄_t along the column j) and φ_x (row j of D_x along the slice
@@ -39,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "core/action/field_boundary.h"
 #include "core/action/local_map.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
@@ -57,6 +60,7 @@ class FieldSystem {
  public:
   static constexpr int m = Density::kComponents;
   static constexpr int K = 3 * m;  // the density's arguments (φ, φ_t, φ_x)
+  using Scalar = Real;
   using Hessian = Eigen::Matrix<Real, K, K>;
 
   // phi0, pi0: φ(0, x_j) and φ_t(0, x_j), value j·m + a.
@@ -75,13 +79,50 @@ class FieldSystem {
   int time_points() const { return nt_; }
   int space_points() const { return nx_; }
   int block() const { return (nt_ + 2) * m; }
-  int size() const { return nx_ * block(); }
+  // The blocks of the spatial points, then the boundary multipliers.
+  int size() const { return nx_ * block() + constrained_ * nt_ * m; }
   int Phi(int i, int j, int a) const { return j * block() + i * m + a; }
   int Lambda3(int j, int a) const { return j * block() + nt_ * m + a; }
   int Lambda4(int j, int a) const { return j * block() + (nt_ + 1) * m + a; }
   // The initial-data rows of point j share the multipliers' positions.
   int InitialValueRow(int j, int a) const { return Lambda3(j, a); }
   int InitialVelocityRow(int j, int a) const { return Lambda4(j, a); }
+  // Data at side 0 (x_0) or 1 (x_{Nx−1}) (field_boundary.h); values: g or h
+  // at the window's nodes, i·m + a.
+  void SetBoundary(int side, BoundaryKind kind, std::vector<Real> values) {
+    if (side != 0 && side != 1)
+      throw std::invalid_argument("boundary side must be 0 (left) or 1");
+    if (kind != BoundaryKind::kNatural && dx_.periodic())
+      throw std::invalid_argument(
+          std::string("a ") + BoundaryName(kind) +
+          " boundary needs an interval; the periodic circle has none");
+    if (kind != BoundaryKind::kNatural &&
+        values.size() != static_cast<std::size_t>(nt_) * m)
+      throw std::invalid_argument(
+          "boundary data: expected " + std::to_string(nt_ * m) +
+          " values (one per time node and component), got " +
+          std::to_string(values.size()));
+    if (kind == BoundaryKind::kNeumann && !FluxDependsOnSlopeOnly(*this))
+      throw std::invalid_argument(
+          "Neumann data need a density whose flux ∂L/∂φ_x depends on φ_x "
+          "alone (they enter as the flux at the prescribed slope); this one "
+          "couples φ_x to φ or φ_t");
+    boundary_[side] = {kind, std::move(values)};
+    constrained_ = (boundary_[0].kind == BoundaryKind::kDirichlet) +
+                   (boundary_[1].kind == BoundaryKind::kDirichlet);
+  }
+  const BoundarySide<Real>& boundary(int side) const { return boundary_[side]; }
+  // The Dirichlet multiplier μ_i of a side (field_boundary.h).
+  int Mu(int side, int i, int a) const {
+    const int slot =
+        side == 1 && boundary_[0].kind == BoundaryKind::kDirichlet ? 1 : 0;
+    return nx_ * block() + (slot * nt_ + i) * m + a;
+  }
+  // Whether point j's column is Dirichlet data (field_boundary.h).
+  bool Fixed(int j) const {
+    return (j == 0 && boundary_[0].kind == BoundaryKind::kDirichlet) ||
+           (j == nx_ - 1 && boundary_[1].kind == BoundaryKind::kDirichlet);
+  }
   bool couples_time_and_space() const { return couples_t_x_; }
   const sbp::RegularizedOperator<Real>& time_operator() const { return dt_; }
   const sbp::SpaceDerivative<Real>& space_operator() const { return dx_; }
@@ -208,6 +249,7 @@ class FieldSystem {
         for (int j = 0; j < nx_; ++j) f[Phi(i, j, a)] += ht * s[j];
       }
     }
+    AddBoundaryResidual(*this, y, f);
   }
 
   // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
@@ -257,6 +299,7 @@ class FieldSystem {
           if (last.coeffs[k] != Real(0))
             sink.Add(Phi(last.first + static_cast<int>(k), j, a), Lambda4(j, a),
                      hx * (last.coeffs[k] * D.inv_dt()));
+        if (Fixed(j)) continue;  // rows replaced by the boundary's
         sink.Add(InitialValueRow(j, a), Phi(0, j, a), Real(1));
         for (std::size_t k = 0; k < first.coeffs.size(); ++k)
           if (first.coeffs[k] != Real(0))
@@ -265,6 +308,7 @@ class FieldSystem {
                      first.coeffs[k] * D.inv_dt());
       }
     }
+    AddBoundaryJacobian(*this, sink);
   }
 
  private:
@@ -332,6 +376,8 @@ class FieldSystem {
   int nt_, nx_;
   std::vector<Real> phi0_, pi0_;
   bool couples_t_x_ = false;
+  BoundarySide<Real> boundary_[2];
+  int constrained_ = 0;
 
   // Work arrays reused across evaluations (not thread-safe).
   struct Scratch {

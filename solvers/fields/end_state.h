@@ -53,6 +53,15 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
   e.phi.resize(static_cast<std::size_t>(nx) * m);
   e.phi_t.resize(e.phi.size());
   for (int j = 0; j < nx; ++j) {
+    if (system.Fixed(j)) {
+      // A Dirichlet point's column is the data (field_boundary.h): its end
+      // state is the last node and D̄_t there; no multipliers to correct by.
+      for (int a = 0; a < m; ++a) {
+        e.phi[j * m + a] = v.phi[system.At(last, j, a)];
+        e.phi_t[j * m + a] = v.phi_t[system.At(last, j, a)];
+      }
+      continue;
+    }
     detail::PointLagrangian<Density> lagrangian{&system.density(), {}};
     double lambda3[m], lambda4[m];
     for (int a = 0; a < m; ++a) {

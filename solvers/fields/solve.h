@@ -52,8 +52,21 @@ struct FieldGrid {
   long long window_points = 0;
 };
 
+// One end of an interval: the natural condition ∂L/∂φ_x = 0 of the discrete
+// action, or Dirichlet / Neumann data imposed by multipliers
+// (core/action/field_boundary.h); value(t, a) is g or h of component a
+// (empty: 0).
+struct FieldBoundarySide {
+  action::BoundaryKind kind = action::BoundaryKind::kNatural;
+  std::function<double(double t, int a)> value;
+};
+struct FieldBoundary {
+  FieldBoundarySide left, right;
+};
+
 struct FieldSolveOptions {
   FieldNewtonOptions newton;
+  FieldBoundary boundary;  // natural unless set; an interval only
   bool keep_field = true;  // every slice of φ and φ_t in FieldSolution
   bool check_resolution = true;
   // Called after each accepted window with the windows done, their number
@@ -94,6 +107,30 @@ inline std::vector<long long> WindowSizes(long long points, long long w,
     left -= take;
   }
   return sizes;
+}
+
+// The window's boundary data at its nodes t0 + iΔt.
+template <class System>
+void SetBoundaryData(System& sys, const FieldBoundary& b, double t0,
+                     double dt) {
+  constexpr int m = System::m;
+  const FieldBoundarySide* sides[2] = {&b.left, &b.right};
+  for (int side = 0; side < 2; ++side) {
+    if (sides[side]->kind == action::BoundaryKind::kNatural) continue;
+    std::vector<double> values(std::size_t(sys.time_points()) * m, 0.0);
+    if (sides[side]->value)
+      for (int i = 0; i < sys.time_points(); ++i)
+        for (int a = 0; a < m; ++a) {
+          const double t = t0 + dt * i;
+          values[i * m + a] = sides[side]->value(t, a);
+          if (!std::isfinite(values[i * m + a]))
+            throw std::invalid_argument(
+                std::string(side == 0 ? "left" : "right") + " " +
+                action::BoundaryName(sides[side]->kind) +
+                " data: non-finite value at t = " + std::to_string(t));
+        }
+    sys.SetBoundary(side, sides[side]->kind, std::move(values));
+  }
 }
 
 }  // namespace detail
@@ -142,6 +179,11 @@ FieldSolution SolveField(const Density& density,
   for (std::size_t w = 0; w < sizes.size(); ++w) {
     const long long pts = sizes[w];
     const double t1 = t0 + s.dt * double(pts - 1);
+    // The system first: its boundary data are checked before anything else.
+    sbp::RegularizedOperator<double> dt(
+        sbp::MakeOperator<double>(grid.op, pts, t0, t1));
+    action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
+    detail::SetBoundaryData(sys, options.boundary, t0, s.dt);
     if (options.check_resolution) {
       const double od = s.dt * FastestFieldFrequency(density, dx, rho, phi, pi);
       s.omega_dt = std::max(s.omega_dt, od);
@@ -160,9 +202,6 @@ FieldSolution SolveField(const Density& density,
         return s;
       }
     }
-    sbp::RegularizedOperator<double> dt(
-        sbp::MakeOperator<double>(grid.op, pts, t0, t1));
-    action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
     if (pts != cached_size) {
       cache = FieldFactorCache(options.newton.solver);
       cached_size = pts;
