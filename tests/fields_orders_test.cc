@@ -113,62 +113,6 @@ BOOST_AUTO_TEST_CASE(bounded_space_orders_are_reported) {
   }
 }
 
-// Boundary data by multipliers (core/action/field_boundary.h): the
-// sine-Gordon kink moving at v = 0.5 on [−4, 4] to T = 2, its exact value
-// (Dirichlet) or slope (Neumann) prescribed at both ends as functions of t,
-// SBP42 in time (129 points, windows of 16, so each window takes its own
-// data) and in space. The fitted order in Δx at t = T, reported with the
-// floor of the natural condition's test above.
-BOOST_AUTO_TEST_CASE(dirichlet_and_neumann_data_by_multipliers) {
-  const fields::SineGordon sg;
-  const fields::SineGordonKink kink{0.5, 0.0};
-  const auto slope = [&](double t, double x) {
-    using J = ceres::Jet<double, 1>;
-    return kink(J(t), J(x, 0)).v[0];
-  };
-  using action::BoundaryKind;
-  for (const BoundaryKind kind :
-       {BoundaryKind::kDirichlet, BoundaryKind::kNeumann}) {
-    const bool dirichlet = kind == BoundaryKind::kDirichlet;
-    fields::FieldSolveOptions options;
-    options.boundary.left = {kind, [&](double t, int) {
-                               return dirichlet ? kink(t, -4.0)
-                                                : slope(t, -4.0);
-                             }};
-    options.boundary.right = {kind, [&](double t, int) {
-                                return dirichlet ? kink(t, 4.0) : slope(t, 4.0);
-                              }};
-    std::vector<double> h, err;
-    double boundary = 0;
-    for (int nx : {21, 31, 41, 61}) {
-      const auto dx = SpaceDerivative<double>::Bounded("sbp42", nx, -4.0, 4.0);
-      const auto s = Solve(sg, kink, dx, {"sbp42", 129, 2.0, 16}, options);
-      h.push_back(dx.dx());
-      err.push_back(EndErrors(s, kink, dx, 2.0).second);
-      if (dirichlet)  // the data hold at every kept slice
-        for (std::size_t k = 0; k < s.t.size(); ++k)
-          boundary =
-              std::max({boundary, std::abs(s.phi[k * nx] - kink(s.t[k], -4.0)),
-                        std::abs(s.phi[k * nx + nx - 1] - kink(s.t[k], 4.0))});
-    }
-    const double p = Slope(h, err);
-    BOOST_TEST_MESSAGE(action::BoundaryName(kind)
-                       << ": fitted order in space " << p << " (error "
-                       << err.front() << " at 21 points, " << err.back()
-                       << " at 61)");
-    BOOST_TEST(p >= 2.7);
-    BOOST_TEST(err.back() <= 1e-3);
-    BOOST_TEST(boundary <= 1e-13);
-  }
-  // The data matter: with the natural condition φ_x = 0 instead, the same
-  // run misses the kink by far more.
-  const auto dx = SpaceDerivative<double>::Bounded("sbp42", 61, -4.0, 4.0);
-  const auto s = Solve(sg, kink, dx, {"sbp42", 129, 2.0, 16});
-  const double natural = EndErrors(s, kink, dx, 2.0).second;
-  BOOST_TEST_MESSAGE("natural: error " << natural << " at 61 points");
-  BOOST_TEST(natural >= 10 * 3.5e-4);
-}
-
 // Sine-Gordon on [−20, 20] to T = 2 against the exact solutions: the
 // breather (ω = 0.5) with order-8 periodic differences on 200 points, the
 // moving kink (v = 0.5) on the interval with SBP63 in space on 301 points
@@ -283,16 +227,6 @@ BOOST_AUTO_TEST_CASE(marching_keeps_the_order_and_reuses_the_factorization) {
   BOOST_TEST(p >= 3.7);
 }
 
-// L = ½φ_t² − ½(1 + φ²)φ_x²: a flux that depends on φ.
-struct Stiffening {
-  static constexpr int kComponents = 1;
-  template <class T>
-  T operator()(const T* p, const T* pt, const T* px) const {
-    return T(0.5) * pt[0] * pt[0] -
-           T(0.5) * (1.0 + p[0] * p[0]) * px[0] * px[0];
-  }
-};
-
 BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_reason) {
   const fields::SineGordon sg;
   auto message = [](auto f) {
@@ -335,31 +269,6 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_reason) {
                    fields::SolveField(sg, dx, {"sbp99", 9, 1.0, 0}, ok, ok);
                  }),
                  "unknown SBP operator 'sbp99'"));
-  // Boundary data: none on the circle, finite, and Neumann data only for a
-  // flux that depends on φ_x alone.
-  using action::BoundaryKind;
-  fields::FieldSolveOptions dirichlet;
-  dirichlet.boundary.left = {BoundaryKind::kDirichlet, {}};
-  BOOST_TEST(
-      has(message([&] {
-            fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, ok, dirichlet);
-          }),
-          "a dirichlet boundary needs an interval"));
-  const auto interval = SpaceDerivative<double>::Bounded("sbp21", 8, 0, 1);
-  dirichlet.boundary.right = {BoundaryKind::kDirichlet,
-                              [](double t, int) { return 1 / (t - 0.5); }};
-  BOOST_TEST(has(message([&] {
-                   fields::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok,
-                                      ok, dirichlet);
-                 }),
-                 "right dirichlet data: non-finite value at t = 0.5"));
-  fields::FieldSolveOptions neumann;
-  neumann.boundary.left = {BoundaryKind::kNeumann, {}};
-  BOOST_TEST(has(message([&] {
-                   fields::SolveField(Stiffening{}, interval,
-                                      {"sbp21", 9, 1.0, 0}, ok, ok, neumann);
-                 }),
-                 "flux ∂L/∂φ_x depends on φ_x alone"));
 }
 
 // The method of lines on the same spatial operator (method_of_lines.h):

@@ -7,6 +7,7 @@
 #include <ceres/jet.h>
 
 #include <Eigen/Dense>
+#include <array>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <numbers>
@@ -33,9 +34,14 @@ struct DenseSink {
   void Add(int r, int c, double v) { m(r, c) += v; }
 };
 
+// Data at the ends (core/action/field_boundary.h), natural unless given.
+using Kinds = std::array<action::BoundaryKind, 2>;
+constexpr Kinds kNatural = {action::BoundaryKind::kNatural,
+                            action::BoundaryKind::kNatural};
+
 template <class Density>
 void CheckJacobian(const Density& density, const SpaceDerivative<double>& dx,
-                   const char* op, int nt) {
+                   const char* op, int nt, Kinds kinds = kNatural) {
   constexpr int m = Density::kComponents;
   const sbp::RegularizedOperator<double> dt(
       sbp::MakeOperator<double>(op, nt, 0.0, 0.4));
@@ -45,7 +51,14 @@ void CheckJacobian(const Density& density, const SpaceDerivative<double>& dx,
     phi0[k] = 0.3 * std::sin(1.3 * k);
     pi0[k] = 0.2 * std::cos(0.7 * k);
   }
-  const action::FieldSystem<Density> sys(density, dt, dx, phi0, pi0);
+  action::FieldSystem<Density> sys(density, dt, dx, phi0, pi0);
+  for (int side = 0; side < 2; ++side)
+    if (kinds[side] != action::BoundaryKind::kNatural) {
+      std::vector<double> data(std::size_t(nt) * m);
+      for (std::size_t k = 0; k < data.size(); ++k)
+        data[k] = 0.4 * std::cos(0.9 * double(k) + side);
+      sys.SetBoundary(side, kinds[side], data);
+    }
   Eigen::VectorXd y(sys.size());
   for (int k = 0; k < sys.size(); ++k) y[k] = 0.5 * std::sin(0.37 * k + 0.1);
   DenseSink sink{Eigen::MatrixXd::Zero(sys.size(), sys.size())};
@@ -63,6 +76,8 @@ void CheckJacobian(const Density& density, const SpaceDerivative<double>& dx,
     worst = std::max(worst, (col - sink.m.col(c)).cwiseAbs().maxCoeff());
   }
   BOOST_TEST_MESSAGE(op << " in time, " << dx.name() << " in space, m = " << m
+                        << ", ends " << action::BoundaryName(kinds[0]) << "/"
+                        << action::BoundaryName(kinds[1])
                         << ": max |J − ΔF/Δy| = " << worst << " of " << scale);
   BOOST_TEST(worst <= 1e-7 * scale);
 }
@@ -78,6 +93,13 @@ BOOST_AUTO_TEST_CASE(jacobian_matches_differences_of_the_residual) {
   CheckJacobian(fields::Phi4{},
                 SpaceDerivative<double>::Bounded("sbp21", 5, -1.0, 1.0),
                 "sbp84", 17);
+  using action::BoundaryKind;
+  CheckJacobian(fields::ComplexPhi4{},
+                SpaceDerivative<double>::Bounded("sbp42", 8, 0.0, 3.0), "sbp42",
+                9, {BoundaryKind::kDirichlet, BoundaryKind::kNeumann});
+  CheckJacobian(fields::SineGordon{},
+                SpaceDerivative<double>::Bounded("sbp21", 5, -1.0, 1.0),
+                "sbp21", 5, {BoundaryKind::kNeumann, BoundaryKind::kDirichlet});
 }
 
 namespace {
