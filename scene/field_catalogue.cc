@@ -58,6 +58,20 @@ sbp::SpaceDerivative<double> FieldScene::Space() const {
                                                int(space_points), x0, x1);
 }
 
+fields::FieldBoundary FieldScene::Boundary() const {
+  fields::FieldBoundary b;
+  fields::FieldBoundarySide* sides[2] = {&b.left, &b.right};
+  for (int side = 0; side < 2; ++side) {
+    if (boundary == "periodic" || ends[side] == "natural") continue;
+    sides[side]->kind = ends[side] == "dirichlet"
+                            ? action::BoundaryKind::kDirichlet
+                            : action::BoundaryKind::kNeumann;
+    const double v = boundary_values[side];
+    sides[side]->value = [v](double, int) { return v; };
+  }
+  return b;
+}
+
 std::vector<fields::FieldTerm> FieldScene::Terms() const {
   std::vector<fields::FieldTerm> out;
   for (const auto& t : terms) out.push_back(MakeFieldTerm(*t.type, t.values));
@@ -75,10 +89,13 @@ nlohmann::json FieldSceneJson(const FieldScene& s) {
                           {"domain", {s.x0, s.x1}},
                           {"points", s.space_points},
                           {"boundary", s.boundary}};
-  if (s.boundary == "periodic")
+  if (s.boundary == "periodic") {
     field["space_order"] = s.space_order;
-  else
+  } else {
     field["space_operator"] = s.space_operator;
+    field["ends"] = s.ends;
+    field["boundary_values"] = s.boundary_values;
+  }
   nlohmann::json initial = {{"profile", s.initial.profile},
                             {"allow_jump", s.initial.allow_jump}};
   for (const auto& [name, v] : s.initial.parameters) initial[name] = v;
@@ -111,9 +128,12 @@ std::string FieldSchemaHelp() {
        "               domain = [x0, x1]  the spatial interval\n"
        "               points = Nx        spatial points\n"
        "               boundary = \"periodic\"  periodic | natural (φ_x = 0 "
-       "weakly)\n"
+       "weakly) |\n"
+       "                          dirichlet | neumann, or [left, right]\n"
+       "               boundary_values = [0, 0]  φ (dirichlet) or φ_x "
+       "(neumann) at the ends\n"
        "               space_order = 8    periodic differences: 2, 4, 6, 8\n"
-       "               space_operator = \"sbp42\"  natural: "
+       "               space_operator = \"sbp42\"  on an interval: "
     << detail::Join({sbp::kOperatorNames.begin(), sbp::kOperatorNames.end()})
     << "\n"
        "  [[term]]     type = \"...\"       one table per density term\n"

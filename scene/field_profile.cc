@@ -92,9 +92,22 @@ ProfileFormulas Gaussian(const ProfileValues& p, const TermSet& terms) {
         "'kinetic' and 'gradient')";
     return f;
   }
-  g.images = p.s.boundary == "periodic"
-                 ? fields::MovingGaussian::Images::kPeriodic
-                 : fields::MovingGaussian::Images::kMirrored;
+  // The images that make the pulse exact: periodic, or even (φ_x = 0) or
+  // odd (φ = 0) reflections at ends of the same kind with zero data.
+  using Images = fields::MovingGaussian::Images;
+  const auto& e = p.s.ends;
+  const bool zero = p.s.boundary_values == std::array<double, 2>{0, 0};
+  const bool even = e[0] != "dirichlet" && e[1] != "dirichlet";
+  const bool odd = e[0] == "dirichlet" && e[1] == "dirichlet";
+  if (p.s.boundary != "periodic" && !(zero && (even || odd))) {
+    f.no_exact =
+        "a Gaussian pulse has an exact solution (its images) only for zero "
+        "data at ends of one kind: both dirichlet, or both natural or neumann";
+    return f;
+  }
+  g.images = p.s.boundary == "periodic" ? Images::kPeriodic
+             : even                     ? Images::kMirrored
+                                        : Images::kAntiMirrored;
   g.x0 = p.s.x0;
   g.length = p.s.x1 - p.s.x0;
   f.exact = [g](double t, double x, double* phi, double* phi_t) {

@@ -37,6 +37,7 @@ FieldRun Run(const FieldScene& s,
   for (int j = 0; j < dx.points(); ++j) run.x.push_back(dx.x(j));
   fields::FieldSolveOptions options;
   options.on_window = on_window;
+  options.boundary = s.Boundary();
   const fields::FieldGrid grid{.op = s.method.op,
                                .points = s.time_points,
                                .t_end = s.t_end,

@@ -10,7 +10,10 @@
 //   components = 1                          # 1 or 2 (a complex field)
 //   domain = [-20.0, 20.0]                  # [x0, x1]
 //   points = 200                            # spatial points
-//   boundary = "periodic"                   # periodic | natural
+//   boundary = "periodic"                   # periodic | natural |
+//                                           # dirichlet | neumann, or
+//                                           # ["dirichlet", "natural"]
+//   boundary_values = [0.0, 0.0]            # φ or φ_x at the two ends
 //   space_order = 8                         # periodic: 2, 4, 6, 8
 //   space_operator = "sbp42"                # natural: sbp21 … sbp84
 //   [[term]]                                # one table per density term
@@ -32,6 +35,7 @@
 //   phi_t = true                            # write φ_t next to φ
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -44,6 +48,7 @@
 #include "core/sbp/space.h"
 #include "problems/fields/terms.h"
 #include "scene/scene.h"
+#include "solvers/fields/solve.h"
 
 namespace vivp::scene {
 
@@ -57,7 +62,14 @@ struct FieldScene {
   int components = 1;
   double x0 = 0, x1 = 1;
   long long space_points = 0;
-  std::string boundary = "periodic";     // periodic | natural
+  // periodic, or the ends' kinds: natural | dirichlet | neumann, one for
+  // both ends or "left/right" when they differ.
+  std::string boundary = "periodic";
+  std::array<std::string, 2> ends = {"natural", "natural"};
+  // φ (dirichlet) or φ_x (neumann) at the left and right ends, every
+  // component; where the ends meet the data: "FILE:LINE:COL: ".
+  std::array<double, 2> boundary_values = {0, 0};
+  std::string where_boundary;
   int space_order = 8;                   // periodic differences
   std::string space_operator = "sbp42";  // natural: an SBP operator
   std::vector<EffectSpec> terms;         // type from FieldTermCatalogue()
@@ -93,6 +105,8 @@ struct FieldScene {
 
   bool Wants(const std::string& diagnostic) const;
   sbp::SpaceDerivative<double> Space() const;
+  // The ends' data for the solver (constant in time).
+  fields::FieldBoundary Boundary() const;
   // The density of the terms, for components() = M.
   template <int M>
   fields::ComposedDensity<M> Density() const {

@@ -48,13 +48,53 @@ void ReadSpacePoints(const TomlReader& r, const toml::table& t, FieldScene& s) {
   }
 }
 
+// boundary = "periodic" | "natural" | "dirichlet" | "neumann", or an array
+// [left, right] of the last three; boundary_values = [left, right] where an
+// end has data.
+void ReadBoundary(const TomlReader& r, const toml::table& t, FieldScene& s) {
+  const std::vector<std::string> ends = {"natural", "dirichlet", "neumann"};
+  const toml::node* n = t.get("boundary");
+  if (n && n->is_array()) {
+    const toml::array& a = *n->as_array();
+    if (a.size() != 2)
+      r.Fail(*n, "boundary has " + std::to_string(a.size()) + " entries",
+             "expected [left, right], each one of " + Join(ends));
+    for (int side = 0; side < 2; ++side)
+      s.ends[side] = r.Choice(*a.get(side), "boundary", ends);
+    s.boundary =
+        s.ends[0] == s.ends[1] ? s.ends[0] : s.ends[0] + "/" + s.ends[1];
+  } else if (n) {
+    std::vector<std::string> all = {"periodic"};
+    all.insert(all.end(), ends.begin(), ends.end());
+    s.boundary = r.Choice(*n, "boundary", all);
+    if (s.boundary != "periodic") s.ends = {s.boundary, s.boundary};
+  }
+  const bool data = s.boundary != "periodic" &&
+                    (s.ends[0] != "natural" || s.ends[1] != "natural");
+  const std::string expected =
+      "boundary_values = [left, right], φ at a dirichlet end or φ_x at a "
+      "neumann one";
+  if (const toml::node* v = t.get("boundary_values")) {
+    if (!data)
+      r.Fail(*v,
+             "'boundary_values' does not apply to boundary = \"" + s.boundary +
+                 "\"",
+             "expected boundary = \"dirichlet\" or \"neumann\" at an end");
+    const std::vector<double> x = r.Numbers(*v, "boundary_values", 2, expected);
+    s.boundary_values = {x[0], x[1]};
+    s.where_boundary = r.Where(*v);
+  } else if (n) {
+    s.where_boundary = r.Where(*n);
+  }
+}
+
 }  // namespace
 
 void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
   const toml::table& t = r.Table(root, "field", true);
   r.CheckKeys(t, "[field]",
-              {"components", "domain", "points", "boundary", "space_order",
-               "space_operator"});
+              {"components", "domain", "points", "boundary", "boundary_values",
+               "space_order", "space_operator"});
   if (const toml::node* n = t.get("components")) {
     const long long m =
         r.Whole(*n, "components", 1, "1 (a real field) or 2 (a complex one)");
@@ -73,8 +113,7 @@ void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
            "expected " + domain);
   s.x0 = x[0];
   s.x1 = x[1];
-  if (const toml::node* n = t.get("boundary"))
-    s.boundary = r.Choice(*n, "boundary", {"periodic", "natural"});
+  ReadBoundary(r, t, s);
   const bool periodic = s.boundary == "periodic";
   if (const toml::node* n = t.get(periodic ? "space_operator" : "space_order"))
     r.Fail(*n,

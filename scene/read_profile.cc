@@ -96,6 +96,38 @@ void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
                        "; running it anyway (allow_jump = true)");
 }
 
+// At a Dirichlet end the data replace the profile's value: a difference
+// there is a jump at t = 0 that the solve would launch as a wave.
+void CheckDirichletData(const TomlReader& r, const toml::node& at,
+                        FieldScene& s) {
+  const int m = s.components;
+  const long long nx = s.space_points;
+  double size = 1;
+  for (std::size_t k = 0; k < s.phi0.size(); ++k)
+    size = std::max({size, std::abs(s.phi0[k]), std::abs(s.phi_t0[k])});
+  for (int side = 0; side < 2; ++side) {
+    if (s.boundary == "periodic" || s.ends[side] != "dirichlet") continue;
+    const std::size_t j = side == 0 ? 0 : std::size_t(nx - 1);
+    double jump = 0;
+    for (int a = 0; a < m; ++a)
+      jump =
+          std::max(jump, std::abs(s.phi0[j * m + a] - s.boundary_values[side]));
+    if (!(jump > kJumpTolerance * size)) continue;
+    const std::string what = "the profile " + Quote(s.initial.profile) +
+                             " is " + FormatNumber(s.phi0[j * m]) + " at the " +
+                             (side == 0 ? "left" : "right") +
+                             " end, the dirichlet value " +
+                             FormatNumber(s.boundary_values[side]) +
+                             " (a jump of " + FormatNumber(jump) + " at t = 0)";
+    if (!s.initial.allow_jump)
+      r.Fail(at, what,
+             "expected boundary_values that match the profile at the ends, "
+             "or allow_jump = true in [initial] to run it anyway");
+    s.warnings.push_back(r.Where(at) + what +
+                         "; running it anyway (allow_jump = true)");
+  }
+}
+
 }  // namespace
 
 void ReadProfile(const TomlReader& r, const toml::table& root,
@@ -112,7 +144,8 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
     if (!n->is_boolean())
       r.Fail(*n, "'allow_jump' must be true or false, got " + TypeName(*n),
              "expected allow_jump = true to run a profile that is not "
-             "periodic on a periodic domain");
+             "periodic on a periodic domain or does not match dirichlet "
+             "data");
     s.initial.allow_jump = *n->value<bool>();
   }
   for (const auto& k : KeysOf(s.initial.profile)) {
@@ -127,12 +160,14 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
         r.Require(t, "initial", "file",
                   "file = \"samples.csv\", one row φ, φ_t per spatial point");
     ReadProfileCsv(r, f, base, s);
+    CheckDirichletData(r, f, s);
     s.no_exact = "a CSV profile has no exact solution";
     return;
   }
   const ProfileFormulas formulas = MakeProfile(r, t, s);
   ComputeInitialData(r, p, formulas.initial, dx, s);
   if (s.boundary == "periodic") CheckPeriodicJump(r, p, formulas.initial, s);
+  CheckDirichletData(r, p, s);
   s.exact = formulas.exact;
   s.no_exact = formulas.no_exact;
 }

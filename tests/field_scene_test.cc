@@ -3,7 +3,7 @@
 // field scenes read with their exact solutions and periodic profiles; the
 // two kinds of scene are told apart; a profile is exact only for the terms
 // it solves; the moving Gaussian's exact solution satisfies the natural
-// boundary condition and the wave equation.
+// boundary condition and the wave equation; boundary data at the ends.
 #define BOOST_TEST_MODULE field_scene
 #include "scene/field_scene.h"
 
@@ -16,6 +16,7 @@
 #include "problems/fields/densities.h"
 #include "problems/fields/profiles.h"
 #include "problems/fields/terms.h"
+#include "scene/field_run.h"
 
 namespace fs = std::filesystem;
 using namespace vivp;
@@ -182,10 +183,81 @@ BOOST_AUTO_TEST_CASE(MirroredGaussian_MeetsTheNaturalBoundaryCondition) {
           (phi(t, x + h) - 2 * phi(t, x) + phi(t, x - h)) / (h * h);
       BOOST_TEST(std::abs(tt - 4 * xx) < 1e-4);
     }
+  // Odd images: φ = 0 at the ends instead.
+  g.images = fields::MovingGaussian::Images::kAntiMirrored;
+  for (double t : {0.0, 0.7, 2.9})
+    for (double end : {-3.0, 5.0}) BOOST_TEST(std::abs(phi(t, end)) < 1e-15);
   // Without images, at t = 0: the pulse itself, with φ_t = −v φ_x.
   g.images = fields::MovingGaussian::Images::kNone;
   const auto [f, ft] = g(0.0, 4.3);
   BOOST_TEST(f == std::exp(-0.09 / 0.72), boost::test_tools::tolerance(1e-14));
   BOOST_TEST(ft == -0.5 * (-0.3 / 0.36) * f,
              boost::test_tools::tolerance(1e-14));
+}
+
+// boundary = "dirichlet" | "neumann" | [left, right] with boundary_values
+// (core/action/field_boundary.h), the shipped string scene solved on a
+// coarser grid: at t = 10 the pulse is back at the centre upside down, and
+// the data hold at the ends.
+BOOST_AUTO_TEST_CASE(BoundaryData_AreReadCheckedAndSolved) {
+  const scene::AnyScene any = scene::ReadAnyScene(fs::path(VIVP_SCENES_DIR) /
+                                                  "field_wave_dirichlet.toml");
+  auto s = std::get<scene::FieldScene>(any);
+  BOOST_TEST(s.boundary == "dirichlet");
+  BOOST_TEST(s.ends[1] == "dirichlet");
+  BOOST_TEST(bool(s.exact));
+  s.space_points = 101;
+  s.time_points = 401;
+  s.phi0.assign(101, 0.0);
+  s.phi_t0.assign(101, 0.0);
+  const auto dx = s.Space();
+  for (int j = 0; j < 101; ++j) s.exact(0.0, dx.x(j), &s.phi0[j], &s.phi_t0[j]);
+  const auto run = scene::RunFieldScene(s);
+  BOOST_TEST_REQUIRE(run.solution.converged, run.solution.message);
+  double flipped = 0;
+  for (int j = 0; j < 101; ++j)
+    flipped = std::max(flipped, std::abs(run.solution.end.phi[j] + s.phi0[j]));
+  BOOST_TEST_MESSAGE("string at t = 10: max |φ + φ(0)| = " << flipped);
+  BOOST_TEST(flipped < 5e-3);
+  BOOST_TEST(run.solution.end.phi[0] == 0.0);
+  BOOST_TEST(run.solution.end.phi[100] == 0.0);
+
+  const std::string terms =
+      "[[term]]\ntype = \"kinetic\"\n[[term]]\ntype = \"gradient\"\n";
+  auto interval = [&](const std::string& boundary, const std::string& initial) {
+    return "[field]\ndomain = [0.0, 4.0]\npoints = 41\n" + boundary +
+           "space_operator = \"sbp42\"\n" + terms + "[initial]\n" + initial +
+           "[time]\nend = 1.0\npoints = 33\n";
+  };
+  const std::string pulse =
+      "profile = \"gaussian\"\ncenter = 2.0\nwidth = 0.25\n";
+  const auto mixed = Field(interval(
+      "boundary = [\"dirichlet\", \"neumann\"]\nboundary_values = [0.0, 0.5]\n",
+      pulse));
+  BOOST_TEST(mixed.boundary == "dirichlet/neumann");
+  BOOST_TEST(!mixed.exact);  // no images for these ends
+  BOOST_TEST(mixed.Boundary().right.value(0.3, 0) == 0.5);
+  const std::string natural = Error(
+      interval("boundary = \"natural\"\nboundary_values = [1, 2]\n", pulse));
+  BOOST_TEST(natural.find("f.toml:5:19: 'boundary_values' does not apply to "
+                          "boundary = \"natural\"") == 0u,
+             natural);
+  BOOST_TEST(Error(interval("boundary = [\"dirichlet\"]\n", pulse))
+                 .find("boundary has 1 entries; expected [left, right]") !=
+             std::string::npos);
+  BOOST_TEST(Error(interval("boundary = [\"periodic\", \"natural\"]\n", pulse))
+                 .find("'periodic' is not a valid boundary") !=
+             std::string::npos);
+  // A profile that is not the Dirichlet value at an end: refused with the
+  // jump, accepted with allow_jump as a warning.
+  const std::string far =
+      "boundary = \"dirichlet\"\nboundary_values = [0.0, 1.0]\n";
+  const std::string refused = Error(interval(far, pulse));
+  BOOST_TEST(refused.find("f.toml:12:11: the profile 'gaussian' is ") == 0u,
+             refused);
+  BOOST_TEST(refused.find("at the right end, the dirichlet value 1 (a jump "
+                          "of 1 at t = 0)") != std::string::npos);
+  BOOST_TEST(
+      Field(interval(far, pulse + "allow_jump = true\n")).warnings.size() ==
+      1u);
 }

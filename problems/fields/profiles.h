@@ -27,28 +27,30 @@ struct MovingGaussian {
   double amplitude = 1.0, width = 1.0, center = 0.0, velocity = 0.0;
   double c = 1.0;  // the wave speed of the exact solution
 
-  enum class Images { kNone, kPeriodic, kMirrored };
+  // Mirrored: even images about both ends (φ_x = 0 there); anti-mirrored:
+  // odd ones (φ = 0 there).
+  enum class Images { kNone, kPeriodic, kMirrored, kAntiMirrored };
   Images images = Images::kNone;
   double x0 = 0.0, length = 1.0;  // the domain, for the images
 
   // φ and φ_t at (t, x); at t = 0 without images: the profile itself.
   std::pair<double, double> operator()(double t, double x) const {
     double phi = 0, phi_t = 0;
-    auto add = [&](double xi, double v) {
+    auto add = [&](double xi, double v, double sign) {
       const double a = 0.5 * (1 + v / c), b = 0.5 * (1 - v / c);
       const auto [fr, dfr] = Pulse(x - c * t - xi);
       const auto [fl, dfl] = Pulse(x + c * t - xi);
-      phi += a * fr + b * fl;
-      phi_t += -c * a * dfr + c * b * dfl;
+      phi += sign * (a * fr + b * fl);
+      phi_t += sign * (-c * a * dfr + c * b * dfl);
     };
     if (images == Images::kNone) {
-      add(center, velocity);
+      add(center, velocity, 1);
       return {phi, phi_t};
     }
     const double period = images == Images::kPeriodic ? length : 2 * length;
     // Images beyond 40σ of both x − ct and x + ct contribute below 1e-300.
     const double reach = 40 * width + c * std::abs(t);
-    auto family = [&](double xi, double v) {
+    auto family = [&](double xi, double v, double sign) {
       const double first = std::ceil((x - xi - reach) / period);
       const double last = std::floor((x - xi + reach) / period);
       // A pulse far wider than the domain, or a time far beyond it, would
@@ -57,10 +59,12 @@ struct MovingGaussian {
         phi = phi_t = std::numeric_limits<double>::quiet_NaN();
         return;
       }
-      for (double k = first; k <= last; ++k) add(xi + k * period, v);
+      for (double k = first; k <= last; ++k) add(xi + k * period, v, sign);
     };
-    family(center, velocity);
-    if (images == Images::kMirrored) family(2 * x0 - center, -velocity);
+    family(center, velocity, 1);
+    if (images != Images::kPeriodic)
+      family(2 * x0 - center, -velocity,
+             images == Images::kMirrored ? 1.0 : -1.0);
     return {phi, phi_t};
   }
 
