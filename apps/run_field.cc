@@ -212,6 +212,19 @@ scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
 }
 
 // The title, the grids and the solver's account, for the reader.
+// " with ends dirichlet (0) / natural" on an interval.
+std::string Ends(const scene::FieldScene& s) {
+  if (s.boundary == "periodic") return "";
+  std::ostringstream o;
+  o << " with ends";
+  for (int side = 0; side < 2; ++side) {
+    o << (side ? " / " : " ") << s.ends[side];
+    if (s.ends[side] != "natural")
+      o << " (" << Rounded(s.boundary_values[side]) << ")";
+  }
+  return o.str();
+}
+
 void PrintRun(std::ostream& human, const scene::FieldScene& s,
               const fields::FieldSolution& sol) {
   const auto dx = s.Space();
@@ -219,8 +232,8 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
         << "\n  field: " << s.components
         << (s.components == 1 ? " component, " : " components, ") << dx.name()
         << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
-        << (s.boundary == "periodic" ? ")" : "]") << ", " << dx.points()
-        << " points\n  " << s.method.op << ", " << s.time_points
+        << (s.boundary == "periodic" ? ")" : "]") << Ends(s) << ", "
+        << dx.points() << " points\n  " << s.method.op << ", " << s.time_points
         << " time points on [0, " << Rounded(s.t_end) << "]";
   if (sol.windows > 1) human << ", " << sol.windows << " windows";
   human << ": " << sol.message << ", " << sol.factorizations
@@ -306,8 +319,8 @@ int CheckFieldScene(const scene::FieldScene& s) {
   if (!s.title.empty()) std::cout << " — " << s.title;
   std::cout << "\n  field of " << s.components << " component(s), " << dx.name()
             << " on [" << s.x0 << ", " << s.x1
-            << (s.boundary == "periodic" ? "), " : "], ") << dx.points()
-            << " points; " << s.terms.size() << " term(s):";
+            << (s.boundary == "periodic" ? ")" : "]") << Ends(s) << ", "
+            << dx.points() << " points; " << s.terms.size() << " term(s):";
   for (const auto& t : s.terms) std::cout << " " << t.type->name;
   std::cout << "\n  profile " << s.initial.profile
             << (s.exact ? " (exact solution known)" : "") << "; " << s.method.op

@@ -8,6 +8,12 @@
 //   auto s = vivp::fields::SolveField(density, dx, grid, phi0, pi0);
 //   // s.phi: every kept slice, value (slice·Nx + j)·m + a
 //
+// On an interval the ends may carry data (core/action/field_boundary.h):
+//
+//   vivp::fields::FieldSolveOptions o;
+//   o.boundary.left = {vivp::action::BoundaryKind::kDirichlet,
+//                      [](double t, int) { return std::sin(t); }};
+//
 // Windows of W time points cover W − 1 intervals; the last one takes the
 // remainder (at least the operator's minimum). Each window is an IVP of its
 // own whose initial data are the previous window's corrected end state
