@@ -7,7 +7,8 @@
 // Dirichlet, φ(t_i, x_b) = g(t_i), by multipliers: the doubled action gains
 // Σ_i Hᵗ_i [μ1_i (φ1(t_i, x_b) − g_i) − μ2_i (φ2(t_i, x_b) − g_i)]. At φ₋ = 0
 // its variation adds Hᵗ_i μ_i to the φ₋ row of (i, b) and the row
-// φ₊(t_i, x_b) = g_i for μ_i; μ_i balances the boundary flux, μ ≈ ±q at x_b.
+// φ₊(t_i, x_b) = g_i for μ_i. μ_i balances the boundary term: the φ₋ row
+// reads Hᵗ_i [μ_i ∓ q_b + O(Δx)], so μ_i → q at x_0 and −q at x_N.
 // The multipliers follow the blocks of the spatial points, Nt·m per
 // Dirichlet side, left side first. The boundary point's column is then the
 // data: its own initial value, initial velocity and end connection are
@@ -21,14 +22,13 @@
 // q = ∂L/∂φ_x at φ_x = h, so that its boundary term reads B(q − q_data). A
 // multiplier cannot impose it: φ(x_b) stays free, so the natural condition
 // q = 0 still holds and a constraint on φ_x contradicts it unless h = 0
-// (measured: with one the kink below converges at order 0.5 in Δx, error
-// 0.17 on 61 points). The data enter through q, so the density's flux must
-// depend on φ_x alone (true of every shipped density; checked).
+// (measured with one on the moving sine-Gordon kink of docs/fields.md §2:
+// order 0.5 in Δx, error 0.17 on 61 points). The data enter through q, so the
+// density's flux must depend on φ_x alone (true of every shipped density;
+// checked).
 #pragma once
 
 #include <Eigen/Core>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "core/autodiff/pointwise.h"
