@@ -67,9 +67,8 @@ struct FieldScene {
   std::string boundary = "periodic";
   std::array<std::string, 2> ends = {"natural", "natural"};
   // φ (dirichlet) or φ_x (neumann) at the left and right ends, every
-  // component; where the ends meet the data: "FILE:LINE:COL: ".
+  // component.
   std::array<double, 2> boundary_values = {0, 0};
-  std::string where_boundary;
   int space_order = 8;                   // periodic differences
   std::string space_operator = "sbp42";  // natural: an SBP operator
   std::vector<EffectSpec> terms;         // type from FieldTermCatalogue()

@@ -82,9 +82,6 @@ void ReadBoundary(const TomlReader& r, const toml::table& t, FieldScene& s) {
              "expected boundary = \"dirichlet\" or \"neumann\" at an end");
     const std::vector<double> x = r.Numbers(*v, "boundary_values", 2, expected);
     s.boundary_values = {x[0], x[1]};
-    s.where_boundary = r.Where(*v);
-  } else if (n) {
-    s.where_boundary = r.Where(*n);
   }
 }
 

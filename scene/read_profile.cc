@@ -65,6 +65,23 @@ void ComputeInitialData(const TomlReader& r, const toml::node& at,
   }
 }
 
+// The scale jumps are measured against: max(1, |φ0|, |φ_t0|) on the grid.
+double ProfileSize(const FieldScene& s) {
+  double size = 1;
+  for (std::size_t k = 0; k < s.phi0.size(); ++k)
+    size = std::max({size, std::abs(s.phi0[k]), std::abs(s.phi_t0[k])});
+  return size;
+}
+
+// A jump in the initial data is refused, or with allow_jump a warning.
+void RefuseOrWarnJump(const TomlReader& r, const toml::node& at,
+                      const std::string& what, const std::string& expected,
+                      FieldScene& s) {
+  if (!s.initial.allow_jump) r.Fail(at, what, expected);
+  s.warnings.push_back(r.Where(at) + what +
+                       "; running it anyway (allow_jump = true)");
+}
+
 // |φ(x_last + Δx) − φ(x0)| and the same of φ_t, where the periodic grid
 // continues the profile: a jump there is a discontinuity the periodic
 // differences would differentiate.
@@ -74,26 +91,22 @@ void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
   std::vector<double> a(m), at_a(m), b(m), bt(m);
   formula(0.0, s.x0, a.data(), at_a.data());
   formula(0.0, s.x1, b.data(), bt.data());
-  double jump = 0, jump_t = 0, size = 1;
+  double jump = 0, jump_t = 0;
   for (int c = 0; c < m; ++c) {
     jump = std::max(jump, std::abs(b[c] - a[c]));
     jump_t = std::max(jump_t, std::abs(bt[c] - at_a[c]));
   }
-  for (std::size_t k = 0; k < s.phi0.size(); ++k)
-    size = std::max({size, std::abs(s.phi0[k]), std::abs(s.phi_t0[k])});
   s.initial.jump = jump;
-  if (!(std::max(jump, jump_t) > kJumpTolerance * size)) return;
+  if (!(std::max(jump, jump_t) > kJumpTolerance * ProfileSize(s))) return;
   const std::string what =
       "the profile " + Quote(s.initial.profile) + " is not periodic on [" +
       FormatNumber(s.x0) + ", " + FormatNumber(s.x1) +
       "): its periodic continuation jumps by |φ(x_last + Δx) − φ(x0)| = " +
       FormatNumber(jump) + " (|φ_t| by " + FormatNumber(jump_t) + ")";
-  if (!s.initial.allow_jump)
-    r.Fail(at, what,
-           "expected a periodic profile, boundary = \"natural\", or "
-           "allow_jump = true in [initial] to run it anyway");
-  s.warnings.push_back(r.Where(at) + what +
-                       "; running it anyway (allow_jump = true)");
+  RefuseOrWarnJump(r, at, what,
+                   "expected a periodic profile, boundary = \"natural\", or "
+                   "allow_jump = true in [initial] to run it anyway",
+                   s);
 }
 
 // At a Dirichlet end the data replace the profile's value: a difference
@@ -102,9 +115,7 @@ void CheckDirichletData(const TomlReader& r, const toml::node& at,
                         FieldScene& s) {
   const int m = s.components;
   const long long nx = s.space_points;
-  double size = 1;
-  for (std::size_t k = 0; k < s.phi0.size(); ++k)
-    size = std::max({size, std::abs(s.phi0[k]), std::abs(s.phi_t0[k])});
+  const double size = ProfileSize(s);
   for (int side = 0; side < 2; ++side) {
     if (s.boundary == "periodic" || s.ends[side] != "dirichlet") continue;
     const std::size_t j = side == 0 ? 0 : std::size_t(nx - 1);
@@ -119,12 +130,11 @@ void CheckDirichletData(const TomlReader& r, const toml::node& at,
                              " end, the dirichlet value " +
                              FormatNumber(s.boundary_values[side]) +
                              " (a jump of " + FormatNumber(jump) + " at t = 0)";
-    if (!s.initial.allow_jump)
-      r.Fail(at, what,
-             "expected boundary_values that match the profile at the ends, "
-             "or allow_jump = true in [initial] to run it anyway");
-    s.warnings.push_back(r.Where(at) + what +
-                         "; running it anyway (allow_jump = true)");
+    RefuseOrWarnJump(
+        r, at, what,
+        "expected boundary_values that match the profile at the ends, or "
+        "allow_jump = true in [initial] to run it anyway",
+        s);
   }
 }
 

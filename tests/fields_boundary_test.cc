@@ -88,18 +88,6 @@ struct Stiffening {
 
 BOOST_AUTO_TEST_CASE(boundary_data_are_refused_with_their_reason) {
   const fields::SineGordon sg;
-  auto message = [](auto f) {
-    try {
-      f();
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  const auto has = [](const std::string& m, const char* what) {
-    BOOST_TEST_MESSAGE(m);
-    return m.find(what) != std::string::npos;
-  };
   const auto dx = SpaceDerivative<double>::Periodic(2, 8, 0.0, 1.0);
   std::vector<double> ok(8, 0.0);
   // None on the circle, finite, and Neumann data only for a
@@ -107,24 +95,26 @@ BOOST_AUTO_TEST_CASE(boundary_data_are_refused_with_their_reason) {
   using action::BoundaryKind;
   fields::FieldSolveOptions dirichlet;
   dirichlet.boundary.left = {BoundaryKind::kDirichlet, {}};
-  BOOST_TEST(
-      has(message([&] {
-            fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, ok, dirichlet);
-          }),
-          "a dirichlet boundary needs an interval"));
+  BOOST_TEST(Refused(
+      [&] {
+        fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, ok, dirichlet);
+      },
+      "a dirichlet boundary needs an interval"));
   const auto interval = SpaceDerivative<double>::Bounded("sbp21", 8, 0, 1);
   dirichlet.boundary.right = {BoundaryKind::kDirichlet,
                               [](double t, int) { return 1 / (t - 0.5); }};
-  BOOST_TEST(has(message([&] {
-                   fields::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok,
-                                      ok, dirichlet);
-                 }),
-                 "right dirichlet data: non-finite value at t = 0.5"));
+  BOOST_TEST(Refused(
+      [&] {
+        fields::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok, ok,
+                           dirichlet);
+      },
+      "right dirichlet data: non-finite value at t = 0.5"));
   fields::FieldSolveOptions neumann;
   neumann.boundary.left = {BoundaryKind::kNeumann, {}};
-  BOOST_TEST(has(message([&] {
-                   fields::SolveField(Stiffening{}, interval,
-                                      {"sbp21", 9, 1.0, 0}, ok, ok, neumann);
-                 }),
-                 "flux ∂L/∂φ_x depends on φ_x alone"));
+  BOOST_TEST(Refused(
+      [&] {
+        fields::SolveField(Stiffening{}, interval, {"sbp21", 9, 1.0, 0}, ok, ok,
+                           neumann);
+      },
+      "flux ∂L/∂φ_x depends on φ_x alone"));
 }

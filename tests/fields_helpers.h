@@ -5,6 +5,8 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -56,6 +58,20 @@ double MaxError(const fields::FieldSolution& s, const U& u,
       e = std::max(e,
                    std::abs(s.phi[k * dx.points() + j] - u(s.t[k], dx.x(j))));
   return e;
+}
+
+// Whether f throws std::invalid_argument with `what` in its message (the
+// message is logged).
+template <class F>
+bool Refused(F f, const char* what) {
+  std::string m = "no error";
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    m = e.what();
+  }
+  BOOST_TEST_MESSAGE(m);
+  return m.find(what) != std::string::npos;
 }
 
 inline double Slope(const std::vector<double>& h,

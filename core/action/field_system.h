@@ -73,7 +73,7 @@ class FieldSystem {
         nt_(dt.points()),
         nx_(dx.points()) {
     SetInitial(std::move(phi0), std::move(pi0));
-    couples_t_x_ = DetectTimeSpaceCoupling();
+    couples_t_x_ = !HessianBlockVanishes<m, m>(m, 2 * m);  // ∂²L/∂φ_t∂φ_x
   }
 
   int time_points() const { return nt_; }
@@ -107,7 +107,9 @@ class FieldSystem {
           "Neumann data need a density whose flux ∂L/∂φ_x depends on φ_x "
           "alone (they enter as the flux at the prescribed slope); this one "
           "couples φ_x to φ or φ_t");
-    boundary_[side] = {kind, std::move(values)};
+    boundary_[side] = {kind, std::move(values), {}};
+    if (kind == BoundaryKind::kNeumann)
+      boundary_[side].flux = detail::Flux(*this, boundary_[side].values);
     constrained_ = (boundary_[0].kind == BoundaryKind::kDirichlet) +
                    (boundary_[1].kind == BoundaryKind::kDirichlet);
   }
@@ -176,6 +178,26 @@ class FieldSystem {
   }
 
   int At(int i, int j, int a) const { return (i * nx_ + j) * m + a; }
+
+  // The density as a function of z = (φ, φ_t, φ_x).
+  auto Call() const {
+    return [this](const auto* z) { return density_(z, z + m, z + 2 * m); };
+  }
+  // Whether the R × C block of the density's Hessian at (row, col) of z is
+  // zero at a few generic points (a density that couples two arguments does
+  // so at almost every point).
+  template <int R, int C>
+  bool HessianBlockVanishes(int row, int col) const {
+    for (int s = 0; s < 4; ++s) {
+      Real z[K];
+      for (int k = 0; k < K; ++k)
+        z[k] = Real(0.3) + Real(0.17) * Real(s) + Real(0.11) * Real(k * k % 7);
+      const Hessian h = autodiff::Hessian<Real, K>(Call(), z).hessian;
+      if (h.template block<R, C>(row, col).cwiseAbs().maxCoeff() != Real(0))
+        return false;
+    }
+    return true;
+  }
 
   // The density's derivatives ∂L/∂(φ, φ_t, φ_x) at grid point (i, j).
   Eigen::Matrix<Real, K, 1> PointGradient(const FieldValues<Real>& v, int i,
@@ -350,24 +372,6 @@ class FieldSystem {
       z[m + a] = v.phi_t[At(i, j, a)];
       z[2 * m + a] = v.phi_x[At(i, j, a)];
     }
-  }
-
-  auto Call() const {
-    return [this](const auto* z) { return density_(z, z + m, z + 2 * m); };
-  }
-
-  // Whether ∂²L/∂φ_t∂φ_x is nonzero anywhere: sampled at a few generic
-  // points (a density that couples them does so at almost every point).
-  bool DetectTimeSpaceCoupling() const {
-    for (int s = 0; s < 4; ++s) {
-      Real z[K];
-      for (int k = 0; k < K; ++k)
-        z[k] = Real(0.3) + Real(0.17) * Real(s) + Real(0.11) * Real(k * k % 7);
-      const Hessian h = autodiff::Hessian<Real, K>(Call(), z).hessian;
-      if (h.template block<m, m>(m, 2 * m).cwiseAbs().maxCoeff() != Real(0))
-        return true;
-    }
-    return false;
   }
 
   const Density& density_;
