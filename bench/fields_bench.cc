@@ -1,18 +1,27 @@
-// Cost of the space-time field solve (solvers/fields), three tables:
+// Cost of the space-time field solve (solvers/fields), four tables:
 //
+// 0. Where a march's time goes: the sine-Gordon breather ω = 0.3 on
+//    [−40, 40) with 400 points, SBP42 in windows of 16, 1201 time points over
+//    one period, with each window linear solver (window_solver.h): Newton's
+//    residuals, assembly (the sparse Jacobian, or the modes' Hessian
+//    blocks), factorizations and solves, and around them each window's setup
+//    (operators, system, data: the allocations), resolution check and
+//    hand-off (corrected end state, kept slices).
 // 1. One Newton iteration over all Nt × Nx points of the sine-Gordon breather
 //    (order-8 periodic differences on [−20, 20), Δt = 0.01): residual,
-//    Jacobian assembly, sparse LU factorization and one solve, for the whole
-//    grid at once or window by window (each window factored afresh — the
-//    worst case; a march reuses factorizations). Peak memory per row from a
-//    child process. The growth in Nt and Nx is read off the rows.
+//    assembly, factorization and one solve, for the whole grid at once or
+//    window by window (each window factored afresh — the worst case; a march
+//    reuses factorizations), by the sparse LU and by the spatial modes. Peak
+//    memory per row from a child process. The growth in Nt and Nx is read
+//    off the rows.
 // 2. The breather to T = 100, marched and by the method of lines on the
 //    same spatial operator: max error against the exact solution, energy
 //    drift, windows, factorizations, time.
 // 3. Marching memory against Nt (only the end state kept).
 //
-// Usage: fields_bench [--quick | --long-run]   (--quick: the 2^18-point
-// rows of table 1 only; --long-run: tables 2 and 3)
+// Usage: fields_bench [--quick | --long-run | --profile]   (--quick: table 0
+// and the 2^18-point rows of table 1; --long-run: tables 2 and 3;
+// --profile: table 0)
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -49,7 +59,7 @@ struct Row {
 // One Newton iteration over nt × nx points in windows of w time points
 // (w = nt: the whole grid), the linearization at φ(t, x) = φ₀(x) + tπ₀(x).
 Row NewtonIteration(const char* op, int nt, int nx, int w,
-                    fields::SparseSolver solver) {
+                    fields::SparseSolver solver, bool modes) {
   const fields::SineGordon sg;
   const fields::SineGordonBreather breather{0.5};
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
@@ -58,6 +68,7 @@ Row NewtonIteration(const char* op, int nt, int nx, int w,
   Row row;
   fields::PatternedMatrix jac;
   fields::SparseLu lu(solver);
+  fields::ModesSolver<fields::SineGordon> spectral(sg);
   int analyzed = 0;
   for (int start = 0; start < nt - 1; start += w - 1) {
     const int pts = std::min(w, nt - start);
@@ -72,6 +83,24 @@ Row NewtonIteration(const char* op, int nt, int nx, int w,
     auto t0 = std::chrono::steady_clock::now();
     sys.Residual(y.data(), f.data());
     row.residual += Since(t0);
+    if (modes) {
+      // Afresh: the modes of this window and the blocks at its y.
+      spectral.Invalidate();
+      t0 = std::chrono::steady_clock::now();
+      spectral.Prepare(sys, y.data());
+      spectral.Assemble(sys, y.data());
+      row.assembly += Since(t0);
+      t0 = std::chrono::steady_clock::now();
+      if (!spectral.Factorize()) std::printf("singular!\n");
+      row.factor += Since(t0);
+      t0 = std::chrono::steady_clock::now();
+      spectral.Solve(f.data());
+      row.solve += Since(t0);
+      ++row.windows;
+      row.jacobian_nnz = 0;
+      row.factor_nnz = static_cast<long long>(spectral.factor_bytes() / 8);
+      continue;
+    }
     t0 = std::chrono::steady_clock::now();
     jac.Assemble(sys.size(), [&](auto& sink) { sys.Jacobian(y.data(), sink); });
     row.assembly += Since(t0);
@@ -109,11 +138,51 @@ double InChild(F&& f) {
   return usage.ru_maxrss / 1024.0;
 }
 
+// 0. Where a march's time goes, per window linear solver.
+void Table0() {
+  std::printf(
+      "Where a march's time goes: sine-Gordon breather ω = 0.3 on [−40, 40),\n"
+      "400 points (order-8 periodic differences), SBP42 in windows of 16,\n"
+      "1201 time points over one period (seconds)\n\n"
+      "| linear solver | residual | assembly | factor | solve | setup | "
+      "check | hand-off | other | total | μs per point | Newton its | "
+      "solves | fallbacks |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const double omega = 0.3;
+  const fields::SineGordon sg;
+  const auto dx = sbp::SpaceDerivative<double>::Periodic(8, 400, -40.0, 80.0);
+  const auto [phi0, pi0] =
+      fields::InitialData(fields::SineGordonBreather{omega}, dx);
+  for (const auto linear : {fields::WindowLinearSolver::kSparseLu,
+                            fields::WindowLinearSolver::kModes}) {
+    fields::FieldSolveOptions o;
+    o.linear = linear;
+    const fields::FieldGrid grid{.op = "sbp42",
+                                 .points = 1201,
+                                 .t_end = 2 * std::numbers::pi / omega,
+                                 .window_points = 16};
+    const auto r = fields::SolveField(sg, dx, grid, phi0, pi0, o);
+    const double known = r.seconds_residual + r.seconds_assembly +
+                         r.seconds_factor + r.seconds_solve + r.seconds_setup +
+                         r.seconds_check + r.seconds_handoff;
+    std::printf(
+        "| %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+        "**%.3f** | %.2f | %lld | %d | %d |%s\n",
+        r.linear_solver.c_str(), r.seconds_residual, r.seconds_assembly,
+        r.seconds_factor, r.seconds_solve, r.seconds_setup, r.seconds_check,
+        r.seconds_handoff, r.seconds_total - known, r.seconds_total,
+        1e6 * r.seconds_total / (1201.0 * 400), r.factorizations, r.corrections,
+        r.fallbacks, r.converged ? "" : (" " + r.message).c_str());
+  }
+  std::printf("\n");
+}
+
 void Table1(bool quick) {
   std::printf(
       "One Newton iteration, sine-Gordon breather, order-8 periodic space,\n"
       "every window factored afresh (seconds; nnz of the Jacobian and of one\n"
-      "window's L+U; peak RSS of the run)\n\n");
+      "window's L+U — for the modes, the values their band factors hold;\n"
+      "assembly is the Hessian blocks there; peak RSS of the run)\n\n");
   std::printf(
       "| time op | solver | Nt × Nx | window | windows | residual | "
       "assembly | factor | solve | total | J nnz | LU nnz | peak MB |\n"
@@ -122,12 +191,19 @@ void Table1(bool quick) {
     const char* op;
     int nt, nx, w;
     fields::SparseSolver solver;
+    bool modes = false;
   };
   using S = fields::SparseSolver;
   std::vector<Config> configs = {
       {"sbp21", 512, 512, 512, S::kUmfpack},
       {"sbp42", 512, 512, 8, S::kUmfpack},
       {"sbp42", 512, 512, 16, S::kUmfpack},
+      {"sbp21", 512, 512, 512, S::kUmfpack, true},
+      {"sbp42", 512, 512, 512, S::kUmfpack, true},
+      {"sbp42", 512, 512, 16, S::kUmfpack, true},
+      {"sbp84", 512, 512, 16, S::kUmfpack, true},
+      {"sbp42", 2048, 2048, 2048, S::kUmfpack, true},
+      {"sbp42", 2048, 2048, 16, S::kUmfpack, true},
   };
   if (!quick) {
     const std::vector<Config> more = {
@@ -147,20 +223,24 @@ void Table1(bool quick) {
         {"sbp42", 512, 1024, 8, S::kUmfpack},
         {"sbp42", 64, 64, 64, S::kUmfpack},
         {"sbp42", 128, 128, 128, S::kUmfpack},
+        {"sbp84", 2048, 2048, 2048, S::kUmfpack, true},
+        {"sbp42", 4096, 1024, 4096, S::kUmfpack, true},
     };
     configs.insert(configs.end(), more.begin(), more.end());
   }
   for (const Config& c : configs) {
     const double mb = InChild([&] {
-      const Row r = NewtonIteration(c.op, c.nt, c.nx, c.w, c.solver);
+      const Row r = NewtonIteration(c.op, c.nt, c.nx, c.w, c.solver, c.modes);
       const double total = r.residual + r.assembly + r.factor + r.solve;
       std::printf(
           "| %s | %s | %d × %d | %s | %d | %.3f | %.3f | %.3f | %.3f "
           "| **%.2f** | %lld | %lld |",
-          c.op, std::string(fields::SparseSolverName(c.solver)).c_str(), c.nt,
-          c.nx, c.w == c.nt ? "global" : std::to_string(c.w).c_str(), r.windows,
-          r.residual, r.assembly, r.factor, r.solve, total, r.jacobian_nnz,
-          r.factor_nnz);
+          c.op,
+          c.modes ? "modes"
+                  : std::string(fields::SparseSolverName(c.solver)).c_str(),
+          c.nt, c.nx, c.w == c.nt ? "global" : std::to_string(c.w).c_str(),
+          r.windows, r.residual, r.assembly, r.factor, r.solve, total,
+          r.jacobian_nnz, r.factor_nnz);
     });
     std::printf(" %.0f |\n", mb);
   }
@@ -273,13 +353,17 @@ void Table3() {
 
 int main(int argc, char** argv) {
   const std::string arg = argc > 1 ? argv[1] : "";
-  if (arg != "" && arg != "--quick" && arg != "--long-run") {
+  if (arg != "" && arg != "--quick" && arg != "--long-run" &&
+      arg != "--profile") {
     std::fprintf(stderr,
-                 "fields_bench: unknown argument '%s' (--quick: the 2^18-point "
-                 "rows only; --long-run: tables 2 and 3 only)\n",
+                 "fields_bench: unknown argument '%s' (--quick: table 0 and "
+                 "the 2^18-point rows of table 1; --long-run: tables 2 and 3 "
+                 "only; --profile: table 0 only)\n",
                  arg.c_str());
     return 2;
   }
+  if (arg == "--profile" || arg == "" || arg == "--quick") Table0();
+  if (arg == "--profile") return 0;
   if (arg != "--long-run") Table1(arg == "--quick");
   if (arg != "--quick") {
     Table2();

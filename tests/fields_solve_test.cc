@@ -172,9 +172,9 @@ BOOST_AUTO_TEST_CASE(full_action_critical_point_is_symmetric) {
     pi0[j] = 0.3 * std::cos(kTwoPi * j / kNx);
   }
   const action::FieldSystem<fields::SineGordon> reduced(sg, dt, dx, phi0, pi0);
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(reduced.size());
-  fields::FieldFactorCache cache;
-  BOOST_REQUIRE(fields::FieldNewton(reduced, y, {}, cache).converged);
+  std::vector<double> y(reduced.size(), 0.0);
+  fields::SparseLuSolver lu;
+  BOOST_REQUIRE(variational::Newton<double>(reduced, y, {}, lu).converged);
 
   auto gradient = [&](const Eigen::VectorXd& u) {
     std::vector<Jet> v(kN);
@@ -252,9 +252,9 @@ BOOST_AUTO_TEST_CASE(noether_identities_hold_exactly) {
       pi0[j] = 0.4 + std::cos(2 * dx.x(j));
     }
     const action::FieldSystem<fields::Wave> sys(wave, dt, dx, phi0, pi0);
-    Eigen::VectorXd y;
-    fields::FieldFactorCache cache;
-    BOOST_REQUIRE(fields::FieldNewton(sys, y, {}, cache).converged);
+    std::vector<double> y;
+    fields::SparseLuSolver lu;
+    BOOST_REQUIRE(variational::Newton<double>(sys, y, {}, lu).converged);
     double end = 0, start = 0;
     for (int j = 0; j < 32; ++j) {
       end += dx.NormWeight(j) * y[sys.Lambda3(j, 0)];
@@ -279,9 +279,9 @@ BOOST_AUTO_TEST_CASE(noether_identities_hold_exactly) {
     }
     const action::FieldSystem<fields::ComplexPhi4> sys(field, dt, dx, phi0,
                                                        pi0);
-    Eigen::VectorXd y;
-    fields::FieldFactorCache cache;
-    BOOST_REQUIRE(fields::FieldNewton(sys, y, {}, cache).converged);
+    std::vector<double> y;
+    fields::SparseLuSolver lu;
+    BOOST_REQUIRE(variational::Newton<double>(sys, y, {}, lu).converged);
     action::FieldValues<double> v;
     sys.Fields(y.data(), v);
     const int n = sys.time_points() - 1;

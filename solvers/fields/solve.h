@@ -44,8 +44,9 @@
 #include "core/sbp/regularized.h"
 #include "solvers/fields/end_state.h"
 #include "solvers/fields/input.h"
-#include "solvers/fields/newton.h"
 #include "solvers/fields/resolution.h"
+#include "solvers/fields/window_solver.h"
+#include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
 
 namespace vivp::fields {
@@ -71,7 +72,12 @@ struct FieldBoundary {
 };
 
 struct FieldSolveOptions {
-  FieldNewtonOptions newton;
+  variational::NewtonOptions newton;
+  // The window's linear solver (window_solver.h): the space-diagonalized
+  // solve, or the sparse LU of the whole window (the reference), and which
+  // sparse LU (also the fallback of the former).
+  WindowLinearSolver linear = WindowLinearSolver::kModes;
+  SparseSolver sparse = SparseSolver::kUmfpack;
   FieldBoundary boundary;  // natural unless set; an interval only
   bool keep_field = true;  // every slice of φ and φ_t in FieldSolution
   bool check_resolution = true;
@@ -91,10 +97,24 @@ struct FieldSolution {
   double dt = 0, omega_dt = 0, limit = 0;  // Δt·ω_max at the worst window
   int windows = 0, corrections = 0;
   long long factorizations = 0;  // Newton iterations: one each
-  long long jacobian_nonzeros = 0;
-  double residual_norm = 0;  // worst window's |F|∞
+  std::string linear_solver;     // "modes" or "sparse-lu"
+  // The space-diagonalized solve: time systems factored (one per distinct
+  // spatial mode and factorization), the bytes its factors hold, and the
+  // windows that fell back to the sparse LU.
+  long long mode_factorizations = 0;
+  std::size_t factor_bytes = 0;
+  int fallbacks = 0;
+  long long lu_factorizations = 0;
+  long long jacobian_nonzeros = 0;  // the sparse LU's, when it ran
+  double residual_norm = 0;         // worst window's |F|∞
+  // Where the time goes: in Newton, the residuals, the Jacobian's assembly
+  // (the sparse LU's) or the Hessian blocks (the modes'), factorizations and
+  // solves; around it, each window's operators, system and data (setup:
+  // the allocations), the resolution check, the corrected end state and the
+  // kept slices (hand-off), and the rest of the total.
   double seconds_assembly = 0, seconds_factor = 0, seconds_solve = 0,
-         seconds_residual = 0, seconds_total = 0;
+         seconds_residual = 0, seconds_setup = 0, seconds_check = 0,
+         seconds_handoff = 0, seconds_total = 0;
 };
 
 namespace detail {
@@ -165,10 +185,25 @@ FieldSolution SolveField(const Density& density,
   const auto sizes =
       detail::WindowSizes(grid.points, grid.window_points, table.min_points);
 
-  FieldFactorCache cache(options.newton.solver);
-  long long cached_size = -1;
+  s.linear_solver = std::string(WindowLinearSolverName(options.linear));
+  ModesSolver<Density> modes(density, options.sparse);
+  SparseLuSolver sparse(options.sparse);
+  long long cached_size = -1, lu_retired = 0;
   double t0 = 0;
   std::vector<double> phi = std::move(phi0), pi = std::move(pi0);
+  auto finish = [&](bool ok, std::string message) {
+    s.converged = ok;
+    s.message = std::move(message);
+    s.mode_factorizations = modes.mode_factorizations();
+    s.factor_bytes = modes.factor_bytes();
+    s.fallbacks = int(modes.fallbacks);
+    s.lu_factorizations =
+        lu_retired + sparse.factorizations + modes.lu_factorizations();
+    s.jacobian_nonzeros = sparse.nonzeros();
+    s.seconds_total =
+        std::chrono::duration<double>(Clock::now() - start).count();
+    return s;
+  };
   const double rho = SpectralRadius(dx);
   action::FieldValues<double> v;  // the accepted window's fields
   auto keep = [&](const action::FieldSystem<Density>& sys, int first,
@@ -182,14 +217,20 @@ FieldSolution SolveField(const Density& density,
       s.phi_t.insert(s.phi_t.end(), c, c + n);
     }
   };
+  auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
   for (std::size_t w = 0; w < sizes.size(); ++w) {
     const long long pts = sizes[w];
     const double t1 = t0 + s.dt * double(pts - 1);
+    auto lap = Clock::now();
     // The system first: its boundary data are checked before anything else.
     sbp::RegularizedOperator<double> dt(
         sbp::MakeOperator<double>(grid.op, pts, t0, t1));
     action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
     detail::SetBoundaryData(sys, options.boundary, t0, s.dt);
+    s.seconds_setup += since(lap);
+    lap = Clock::now();
     if (options.check_resolution) {
       const double od = s.dt * FastestFieldFrequency(density, dx, rho, phi, pi);
       s.omega_dt = std::max(s.omega_dt, od);
@@ -202,41 +243,44 @@ FieldSolution SolveField(const Density& density,
             << " exceeds the " << grid.op << " limit " << s.limit
             << " (ω_max = " << od / s.dt << " from the spatial grid and the "
             << "potential); use at least " << need << " time points";
-        s.message = msg.str();
-        s.seconds_total =
-            std::chrono::duration<double>(Clock::now() - start).count();
-        return s;
+        return finish(false, msg.str());
       }
     }
+    s.seconds_check += since(lap);
+    lap = Clock::now();
     if (pts != cached_size) {
-      cache = FieldFactorCache(options.newton.solver);
+      // The sparse LU's pattern is that of one window length (the modes
+      // solver rebuilds its own per length).
+      lu_retired += sparse.factorizations;
+      sparse = SparseLuSolver(options.sparse);
       cached_size = pts;
     }
     // Start from φ₀ + (t − t0)·π₀.
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(sys.size());
+    std::vector<double> y(sys.size(), 0.0);
     for (int j = 0; j < s.nx; ++j)
       for (int i = 0; i < pts; ++i)
         for (int a = 0; a < m; ++a)
           y[sys.Phi(i, j, a)] = phi[j * m + a] + s.dt * i * pi[j * m + a];
-    const auto r = FieldNewton(sys, y, options.newton, cache);
+    s.seconds_setup += since(lap);
+    const auto r =
+        options.linear == WindowLinearSolver::kModes
+            ? variational::Newton<double>(sys, y, options.newton, modes)
+            : variational::Newton<double>(sys, y, options.newton, sparse);
     ++s.windows;
     s.factorizations += r.iterations;
     s.corrections += r.corrections;
     s.residual_norm = std::max(s.residual_norm, r.residual_norm);
-    s.jacobian_nonzeros = r.jacobian_nonzeros;
-    s.seconds_assembly += r.seconds_assembly;
-    s.seconds_factor += r.seconds_factor;
-    s.seconds_solve += r.seconds_solve;
-    s.seconds_residual += r.seconds_residual;
+    s.seconds_assembly += r.seconds.assembly;
+    s.seconds_factor += r.seconds.factorization;
+    s.seconds_solve += r.seconds.solve;
+    s.seconds_residual += r.seconds.residual;
     if (!r.converged) {
       std::ostringstream msg;
       msg << "Newton did not converge in the window [" << t0 << ", " << t1
           << "]: " << r.reason;
-      s.message = msg.str();
-      s.seconds_total =
-          std::chrono::duration<double>(Clock::now() - start).count();
-      return s;
+      return finish(false, msg.str());
     }
+    lap = Clock::now();
     sys.Fields(y.data(), v);
     keep(sys, w == 0 ? 0 : 1, t0);
     s.end = CorrectFieldEnd(sys, y.data(), v);
@@ -246,13 +290,11 @@ FieldSolution SolveField(const Density& density,
     }
     phi = s.end.phi;
     pi = s.end.phi_t;
+    s.seconds_handoff += since(lap);
     t0 = t1;
     if (options.on_window) options.on_window(int(w) + 1, int(sizes.size()), t1);
   }
-  s.converged = true;
-  s.message = "converged";
-  s.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
-  return s;
+  return finish(true, "converged");
 }
 
 }  // namespace vivp::fields

@@ -1,13 +1,15 @@
-// Newton's method on a banded system F(y) = 0 with the exact Jacobian,
-// iterative refinement, and stopping on step size with a stagnation guard.
+// Newton's method on F(y) = 0 with the exact Jacobian (or an approximation
+// of it), iterative refinement, and stopping on step size with a stagnation
+// guard: the one Newton of point mechanics and of fields.
 //
 // A System provides
 //   int size() const;
-//   int points() const;                               // time nodes
-//   template <class Sink> void Jacobian(const Real* y, Sink& sink,
-//                                       int node_begin, int node_end) const;
 //   void Residual(const Real* y, Real* f) const;      // matrix-free
-//   template <class Sink> void Jacobian(const Real* y, Sink& sink) const;
+// and whatever its linear solver asks of it (the Jacobian). The linear
+// solver is the part that varies (a LinearSolver below): a banded LU for the
+// time nodes of point mechanics (BandedSolver, the default), a sparse LU or
+// a space-diagonalized solve for the space-time window of a field
+// (solvers/fields/window_solver.h).
 //
 // Each iteration assembles and factors the Jacobian once, then takes the
 // Newton step followed by up to `refinement_steps` further corrections with
@@ -16,12 +18,18 @@
 // Nt³ conditioning puts into a single solve (docs/method.md §6); for a
 // nonlinear one it is a cheap simplified-Newton step.
 //
+// A factorization that is not the Jacobian at y — one carried over from an
+// earlier solve, or one the solver only approximates (LinearSolver::exact()
+// false: a preconditioner) — takes chord (simplified Newton) steps, up to
+// eight per factorization, as long as each contracts.
+//
 // Stopping (docs/method.md §6: never on an absolute residual):
 //   converged   the last correction is at round-off, |δ|∞ <= tol·max(1, |y|∞)
 //               with tol = step_tolerance (default 32 eps); or two refinement
 //               steps contract with ratio θ < ½ and θ/(1−θ)|δ|, the estimated
 //               remaining error, is below that bound; or the corrections
-//               stopped shrinking (stagnation) while already below sqrt(eps);
+//               stopped shrinking (stagnation) while already below sqrt(eps)
+//               after a fresh factorization that had contracted;
 //   failed      non-finite residual, singular Jacobian, stagnation above
 //               sqrt(eps), or the iteration limit.
 #pragma once
@@ -68,7 +76,6 @@ struct NewtonReport {
   int corrections = 0;       // Newton + refinement steps taken
   double last_step = 0;      // |δ|∞ of the last correction
   double residual_norm = 0;  // |F(y)|∞ at the returned y
-  int kl = 0, ku = 0;        // band of the Jacobian
   Timings seconds;
 };
 
@@ -91,31 +98,82 @@ inline double Since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace detail
 
-// A factorized Jacobian that outlives one solve. Time-slab marching solves
-// one window after another with the same operator: for a linear problem the
-// Jacobian is the same matrix every time, and for a nonlinear one the
-// previous window's is a good approximation. Newton then starts with chord
-// (simplified Newton) steps on the cached factorization and refactors only
-// when they stop contracting — "factor once, back-substitute per window".
+// The linear solver of Newton's method, a concept:
+//
+//   bool valid;                   holds a factorization to start from
+//   void Invalidate();            valid = false
+//   void Prepare(const System&, const Real* y);  before each solve: sizes
+//   void Assemble(const System&, const Real* y); the Jacobian at y (timed as
+//                                 assembly)
+//   bool Factorize();             false if singular (why in message())
+//   void Solve(Real* b);          b ← J⁻¹ b with the last factorization
+//   bool exact() const;           the last factorization is J at the point
+//                                 it was assembled at (false: an
+//                                 approximation, whose steps are chord steps)
+//   std::string message() const;
+//
+// A solver outlives one solve: time-slab marching solves one window after
+// another with the same operator, and for a linear problem the Jacobian is
+// the same matrix every time, for a nonlinear one the previous window's is a
+// good approximation. Newton then starts with chord (simplified Newton)
+// steps on the carried-over factorization and refactors only when they stop
+// contracting — "factor once, back-substitute per window".
+
+// The banded Jacobian of the time nodes (point mechanics): LAPACK's banded
+// LU (banded_lu.h), the band probed from the system's pattern. The System
+// also provides
+//   int points() const;                               // time nodes
+//   template <class Sink> void Jacobian(const Real* y, Sink& sink) const;
+//   template <class Sink> void Jacobian(const Real* y, Sink& sink,
+//                                       int node_begin, int node_end) const;
 template <class Real>
-struct FactorCache {
+struct BandedSolver {
   bool valid = false;
   linalg::BandedMatrix<Real> jac;
   BandedLu<Real> lu;  // refers to jac
   int kl = 0, ku = 0;
-  long long factorizations = 0;  // over the cache's lifetime
+  long long factorizations = 0;  // over the solver's lifetime
+
+  void Invalidate() { valid = false; }
+  bool exact() const { return true; }
+  std::string message() const { return ""; }
+  template <class System>
+  void Prepare(const System& system, const Real* y) {
+    const int n = system.size();
+    if (valid && jac.size() != n) valid = false;
+    if (valid) return;
+    // Closure rows reach at most twice the widest boundary row into the grid.
+    const linalg::BandwidthProbe probe =
+        linalg::ProbeBand(system, y, system.points(), 32);
+    kl = probe.kl;
+    ku = probe.ku;
+    jac = linalg::BandedMatrix<Real>(n, probe.kl, probe.ku);
+  }
+  template <class System>
+  void Assemble(const System& system, const Real* y) {
+    jac.SetZero();
+    system.Jacobian(y, jac);
+  }
+  bool Factorize() {
+    ++factorizations;
+    return lu.Factor(jac);
+  }
+  void Solve(Real* b) const { lu.Solve(b); }
 };
+
+// Kept under its old name for the marches that hold one.
+template <class Real>
+using FactorCache = BandedSolver<Real>;
 
 // `residual_override`, when given, replaces system.Residual for every
 // residual evaluation (e.g. the same residual evaluated in long double: mixed
-// precision iterative refinement). `cache`, when given, supplies a
-// factorization to start from and keeps the last one for the next call.
-template <class Real, class System>
+// precision iterative refinement). `solver` supplies a factorization to start
+// from and keeps the last one for the next call.
+template <class Real, class System, class LinearSolver>
 NewtonReport Newton(
-    const System& system, std::vector<Real>& y,
-    const NewtonOptions& options = {},
-    const std::function<void(const Real*, Real*)>& residual_override = {},
-    FactorCache<Real>* cache = nullptr) {
+    const System& system, std::vector<Real>& y, const NewtonOptions& options,
+    LinearSolver& solver,
+    const std::function<void(const Real*, Real*)>& residual_override = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   // Per-phase clock, a no-op unless options.phase_timings.
@@ -135,19 +193,8 @@ NewtonReport Newton(
                                               : Real(32) * eps;
   const Real stagnation_floor = std::sqrt(eps);
 
-  FactorCache<Real> local;
-  FactorCache<Real>& fc = cache ? *cache : local;
-  if (fc.valid && fc.jac.size() != n) fc.valid = false;
-  if (!fc.valid) {
-    // Closure rows reach at most twice the widest boundary row into the grid.
-    const linalg::BandwidthProbe probe =
-        linalg::ProbeBand(system, y.data(), system.points(), 32);
-    fc.kl = probe.kl;
-    fc.ku = probe.ku;
-    fc.jac = linalg::BandedMatrix<Real>(n, probe.kl, probe.ku);
-  }
-  report.kl = fc.kl;
-  report.ku = fc.ku;
+  if (static_cast<int>(y.size()) != n) y.assign(n, Real(0));
+  solver.Prepare(system, y.data());
   std::vector<Real> f(n);
 
   auto residual = [&] {
@@ -173,31 +220,38 @@ NewtonReport Newton(
     return finish(false, "non-finite residual at the initial guess");
   Real previous_step = std::numeric_limits<Real>::infinity();
   // A factorization carried over from an earlier solve is stale: it may take
-  // more (chord) corrections, as long as each contracts.
-  bool stale = fc.valid;
+  // more (chord) corrections, as long as each contracts. So is one that only
+  // approximates the Jacobian.
+  bool stale = solver.valid;
+  // Whether the chord steps of an approximate factorization made in this
+  // solve contracted (θ ≤ ¼) before they stopped shrinking.
+  bool contracted = false;
   constexpr int kChordSteps = 8;
   while (report.iterations < options.max_iterations) {
-    if (!fc.valid) {
+    if (!solver.valid) {
       auto t0 = clock.Now();
-      fc.jac.SetZero();
-      system.Jacobian(y.data(), fc.jac);
+      solver.Assemble(system, y.data());
       report.seconds.assembly += clock.Since(t0);
       t0 = clock.Now();
-      const bool ok = fc.lu.Factor(fc.jac);
+      const bool ok = solver.Factorize();
       report.seconds.factorization += clock.Since(t0);
       ++report.iterations;
-      ++fc.factorizations;
-      if (!ok)
+      if (!ok) {
+        const std::string why = solver.message();
         return finish(false, "singular Jacobian at iteration " +
-                                 std::to_string(report.iterations));
-      fc.valid = true;
-      stale = false;
+                                 std::to_string(report.iterations) +
+                                 (why.empty() ? "" : ": " + why));
+      }
+      solver.valid = true;
+      stale = !solver.exact();
+      contracted = false;
     }
+    const bool fresh_approximation = stale && !solver.exact();
     const int inner = stale ? kChordSteps : options.refinement_steps;
     for (int r = 0; r <= inner; ++r) {
       std::vector<Real>& delta = f;  // solve in place: δ = −J⁻¹F
       auto t0 = clock.Now();
-      fc.lu.Solve(delta.data());
+      solver.Solve(delta.data());
       report.seconds.solve += clock.Since(t0);
       Real step(0), ymax(1);
       for (int i = 0; i < n; ++i) {
@@ -226,6 +280,8 @@ NewtonReport Newton(
         return finish(
             true, "refinement converged (estimated remaining error " +
                       std::to_string(double(theta / (1 - theta) * step)) + ")");
+      if (fresh_approximation && r >= 1 && theta <= Real(0.25))
+        contracted = true;
       previous_step = step;
       if (theta >= Real(0.5)) {
         // Corrections stopped shrinking: round-off if already tiny, after a
@@ -235,6 +291,13 @@ NewtonReport Newton(
         // at θ ≈ 0.5 reach √ε with 1e-8 left; measured SBP84 marches on the
         // anharmonic oscillator stopped there), so re-linearise instead.
         if (!stale && step <= stagnation_floor * scale)
+          return finish(true, "corrections stagnated at round-off level");
+        // An approximate factorization of this solve whose steps contracted
+        // and then stopped at a tiny size has met the round-off of the
+        // system: as for a fresh exact one (the space-time window of SBP84,
+        // condition ≈ 4e9, stalls near 1e-11 relative; docs/fields.md §3).
+        if (fresh_approximation && contracted && r >= 2 &&
+            step <= stagnation_floor * scale)
           return finish(true, "corrections stagnated at round-off level");
         // Stale chord steps that stall within 64 ε of the solution's size
         // are at its round-off: the error left, about step/(1 − θ), is too
@@ -253,12 +316,25 @@ NewtonReport Newton(
     }
     // Re-linearise at the current point: after a fresh factorization's
     // refinement budget, or when the (stale or fresh) corrections stall.
-    fc.valid = false;
+    solver.Invalidate();
   }
   return finish(false, "no convergence in " +
                            std::to_string(options.max_iterations) +
                            " iterations (last correction " +
                            std::to_string(report.last_step) + ")");
+}
+
+// Newton with a banded solver of its own (`cache`, when given, is kept for
+// the next call).
+template <class Real, class System>
+NewtonReport Newton(
+    const System& system, std::vector<Real>& y,
+    const NewtonOptions& options = {},
+    const std::function<void(const Real*, Real*)>& residual_override = {},
+    BandedSolver<Real>* cache = nullptr) {
+  BandedSolver<Real> local;
+  return Newton<Real>(system, y, options, cache ? *cache : local,
+                      residual_override);
 }
 
 }  // namespace vivp::variational

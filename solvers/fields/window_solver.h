@@ -1,0 +1,201 @@
+// The linear solvers of a field window for the one Newton
+// (solvers/variational/newton.h, its LinearSolver concept):
+//
+//   SparseLuSolver   the exact sparse Jacobian (assembly.h) and a sparse LU
+//                    (sparse_lu.h): the reference;
+//   ModesSolver      the space-diagonalized solve (mode_solver.h) with the
+//                    density's Hessian blocks — exact for a linear field with
+//                    constant coefficients (one factorization per spatial
+//                    mode for the whole march), otherwise averaged over the
+//                    window at the point of linearization, a preconditioner
+//                    whose chord steps Newton takes on the exact residual.
+//                    When those stop contracting twice in one solve, the
+//                    window falls back to the sparse LU; every fallback is
+//                    counted (FieldSolution::fallbacks), never silent.
+//
+// Both keep their factorization from window to window of the same size
+// (Newton starts a window with chord steps on it).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/action/field_system.h"
+#include "solvers/fields/assembly.h"
+#include "solvers/fields/density_blocks.h"
+#include "solvers/fields/mode_solver.h"
+#include "solvers/fields/sparse_lu.h"
+#include "solvers/fields/spatial_modes.h"
+
+namespace vivp::fields {
+
+// Which linear solver a field window uses.
+enum class WindowLinearSolver { kModes, kSparseLu };
+
+inline std::string_view WindowLinearSolverName(WindowLinearSolver s) {
+  return s == WindowLinearSolver::kModes ? "modes" : "sparse-lu";
+}
+
+class SparseLuSolver {
+ public:
+  explicit SparseLuSolver(SparseSolver kind = SparseSolver::kUmfpack)
+      : lu_(kind) {}
+
+  bool valid = false;
+  long long factorizations = 0;
+
+  void Invalidate() { valid = false; }
+  bool exact() const { return true; }
+  std::string message() const { return lu_.message(); }
+  template <class System>
+  void Prepare(const System& system, const double*) {
+    if (valid && jacobian_.matrix().rows() != system.size()) valid = false;
+  }
+  template <class System>
+  void Assemble(const System& system, const double* y) {
+    jacobian_.Assemble(system.size(),
+                       [&](auto& sink) { system.Jacobian(y, sink); });
+  }
+  bool Factorize() {
+    if (analyzed_pattern_ != jacobian_.patterns()) {
+      lu_.Analyze(jacobian_.matrix());
+      analyzed_pattern_ = jacobian_.patterns();
+    }
+    ++factorizations;
+    return lu_.Factorize(jacobian_.matrix());
+  }
+  void Solve(double* b) const {
+    const Eigen::Index n = jacobian_.matrix().rows();
+    rhs_ = Eigen::Map<const Eigen::VectorXd>(b, n);
+    lu_.Solve(rhs_, x_);
+    Eigen::Map<Eigen::VectorXd>(b, n) = x_;
+  }
+  long long nonzeros() const { return jacobian_.matrix().nonZeros(); }
+
+ private:
+  PatternedMatrix jacobian_;
+  SparseLu lu_;
+  int analyzed_pattern_ = 0;
+  mutable Eigen::VectorXd rhs_, x_;
+};
+
+template <class Density>
+class ModesSolver {
+ public:
+  using System = action::FieldSystem<Density>;
+  static constexpr int m = Density::kComponents;
+  // Spectral rounds (factorizations) per solve before the sparse LU.
+  static constexpr int kRounds = 2;
+
+  explicit ModesSolver(const Density& density,
+                       SparseSolver fallback = SparseSolver::kUmfpack)
+      : constant_(HasConstantBlocks(density)), lu_(fallback) {
+    if (constant_) {
+      const double z[3 * m] = {};
+      blocks_ = BlocksAt(density, z);
+    }
+  }
+
+  bool valid = false;
+  long long fallbacks = 0;  // windows that needed the sparse LU
+
+  void Invalidate() {
+    valid = false;
+    if (use_lu_) lu_.Invalidate();
+  }
+  bool exact() const { return use_lu_ || constant_; }
+  std::string message() const {
+    return use_lu_ ? lu_.message() : modes_ ? modes_->message() : "";
+  }
+  // Per solve: the modes of this window's grid (rebuilt when the window
+  // length, step or boundary changes), and the spectral solve again.
+  void Prepare(const System& system, const double*) {
+    const auto& D = system.time_operator().base();
+    const bool dirichlet[2] = {IsDirichlet(system, 0), IsDirichlet(system, 1)};
+    if (!modes_ || modes_->time_points() != D.points() || dt_ != D.dt() ||
+        dirichlet[0] != dirichlet_[0] || dirichlet[1] != dirichlet_[1]) {
+      if (!spatial_ || dirichlet[0] != dirichlet_[0] ||
+          dirichlet[1] != dirichlet_[1]) {
+        const int nx = system.space_points();
+        spatial_ = std::make_shared<const SpatialModes>(
+            system.space_operator(), dirichlet[0] ? 1 : 0,
+            nx - int(dirichlet[0]) - int(dirichlet[1]));
+      }
+      dirichlet_[0] = dirichlet[0];
+      dirichlet_[1] = dirichlet[1];
+      dt_ = D.dt();
+      if (modes_) retired_ += modes_->factorizations();
+      modes_ = std::make_unique<ModeSolver>(system.time_operator(),
+                                            system.space_operator(), m,
+                                            dirichlet_, spatial_);
+      factored_ = false;
+      valid = false;
+    }
+    if (use_lu_) {
+      // Back to the spectral solve after a window that fell back.
+      use_lu_ = false;
+      valid = factored_;
+    }
+    rounds_ = 0;
+  }
+  void Assemble(const System& system, const double* y) {
+    if (++rounds_ > kRounds) {
+      if (!use_lu_) ++fallbacks;
+      use_lu_ = true;
+      lu_.Prepare(system, y);
+      lu_.Assemble(system, y);
+      return;
+    }
+    if (constant_) return;
+    system.Fields(y, values_);
+    blocks_ = MeanBlocks(system, values_);
+    factored_ = false;
+  }
+  bool Factorize() {
+    if (use_lu_) return lu_.Factorize();
+    if (factored_) return true;
+    factored_ = modes_->Factor(blocks_);
+    return factored_;
+  }
+  void Solve(double* b) const {
+    if (use_lu_)
+      lu_.Solve(b);
+    else
+      modes_->Solve(b);
+  }
+
+  // Time systems factored (one per distinct spatial mode and factorization).
+  long long mode_factorizations() const {
+    return retired_ + (modes_ ? modes_->factorizations() : 0);
+  }
+  long long lu_factorizations() const { return lu_.factorizations; }
+  std::size_t factor_bytes() const {
+    return modes_ ? modes_->factor_bytes() : 0;
+  }
+  int distinct_systems() const {
+    return modes_ ? modes_->distinct_systems() : 0;
+  }
+
+ private:
+  static bool IsDirichlet(const System& s, int side) {
+    return s.boundary(side).kind == action::BoundaryKind::kDirichlet;
+  }
+
+  bool constant_;
+  DensityBlocks blocks_;
+  std::shared_ptr<const SpatialModes> spatial_;
+  std::unique_ptr<ModeSolver> modes_;
+  bool dirichlet_[2] = {false, false};
+  double dt_ = 0;
+  bool factored_ = false;
+  bool use_lu_ = false;
+  int rounds_ = 0;
+  long long retired_ = 0;
+  SparseLuSolver lu_;
+  action::FieldValues<double> values_;
+};
+
+}  // namespace vivp::fields
