@@ -1,6 +1,6 @@
 // `vivp run [SCENE] [--out DIR] [--force]` and `vivp scene check FILE`: a
 // scene file solved end to end, with its trajectory, summary, diagnostics and
-// plots written into one directory (README "Scenes").
+// plots written into one directory (docs/scenes.md §4).
 #include <chrono>
 #include <iostream>
 #include <sstream>

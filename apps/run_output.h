@@ -1,5 +1,5 @@
 // What `vivp run` writes once the solve is done, besides the CSV files of
-// run_sink.h: the plots and summary.json (README "Scenes"). Private to
+// run_sink.h: the plots and summary.json (docs/scenes.md §4). Private to
 // apps/.
 #pragma once
 

@@ -1,4 +1,4 @@
-// What `vivp run` keeps of a run as it goes (README "Scenes"): the CSV files
+// What `vivp run` keeps of a run as it goes (docs/scenes.md §4): the CSV files
 // written node by node, the statistics of each diagnostic column and the
 // errors against the reference, for the summary and the plots. Private to
 // apps/.

@@ -1,4 +1,4 @@
-// Composition must not cost at run time (README "Effects"): a Lagrangian
+// Composition must not cost at run time (docs/performance.md §1): a Lagrangian
 // composed of effects chosen at run time (problems/composed.h) against the
 // hand-written functor of the same system, same solve, same run: reduced
 // Newton, SBP42, Nt = 2^16, median of 7 runs each (interleaved). Also prints

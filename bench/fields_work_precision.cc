@@ -5,7 +5,7 @@
 //
 // Usage: fields_work_precision [--quick] [--markdown] [--verbose]
 //   --quick     the 1e-4 target only
-//   --markdown  the cheapest-configuration table as Markdown (README)
+//   --markdown  the cheapest configurations as Markdown (docs/fields.md §9)
 //   --verbose   every run of every search on stderr
 #include <cmath>
 #include <cstdio>

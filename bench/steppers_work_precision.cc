@@ -3,8 +3,8 @@
 // runs), then for target errors 1e-4, 1e-8 and 1e-12 the cheapest configuration
 // of each method that reaches the target, its time and the ratio to the fastest
 // method at that target (all measured in this run), and last the same as one
-// Markdown table per problem (methods by row, targets by column: the README's
-// "What accuracy costs in time" tables are pasted from it). Usage:
+// Markdown table per problem (methods by row, targets by column: the tables
+// of docs/performance.md §4 are pasted from it). Usage:
 // steppers_work_precision [BUDGET_SECONDS] [PROBLEM...]; the budget caps the
 // slowest run of a sweep (default 0.5).
 #include <algorithm>

@@ -1,5 +1,5 @@
 // A scene: a physical system stated as a sum of named effects, its initial
-// data, the time span, the method and what to output (README "Scenes").
+// data, the time span, the method and what to output (docs/scenes.md §2).
 // Read from TOML (toml++); every value is checked here, so a scene that reads
 // without an error can be solved. Bad input throws SceneError whose message is
 //   FILE:LINE:COL: what is wrong; what is expected

@@ -1,5 +1,5 @@
-// README "Error control": the solve below is shown there verbatim; the test
-// checks it against the exact orbit.
+// docs/error_control.md, "Error control in code": the solve below is shown
+// there verbatim; the test checks it against the exact orbit.
 #include "problems/kepler.h"
 #include "solvers/variational/march.h"
 
@@ -37,7 +37,10 @@ BOOST_AUTO_TEST_CASE(TenOrbitsExample_EndsOnTheExactOrbit) {
   BOOST_TEST(m.points < 40000);  // measured 20493; uniform: 256001 for 2e-10
 }
 
-BOOST_AUTO_TEST_CASE(Readme_ShowsTheCompiledExampleVerbatim) {
-  BOOST_TEST(readme_quote::ReadmeShows(readme_quote::Example(
-      VIVP_SOURCE_DIR "/tests/example_error_control.cc")));
+BOOST_AUTO_TEST_CASE(Docs_ShowTheCompiledExampleVerbatim) {
+  BOOST_TEST(readme_quote::DocShows(
+                 "docs/error_control.md",
+                 readme_quote::Example(VIVP_SOURCE_DIR
+                                       "/tests/example_error_control.cc")),
+             "docs/error_control.md does not show the example");
 }

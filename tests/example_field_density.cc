@@ -1,6 +1,7 @@
-// README "Fields": a Lagrangian density written by hand and the space-time
-// field solved from its action; shown there verbatim. The test checks the
-// moving φ⁴ kink against the exact tanh[γ(x − vt)].
+// docs/fields.md §1: a Lagrangian density written by hand and the
+// space-time field solved from its action; shown there verbatim (the README's
+// "Add a field density" points to it). The test checks the moving φ⁴ kink
+// against the exact tanh[γ(x − vt)].
 #include <cmath>
 #include <vector>
 
@@ -64,11 +65,12 @@ BOOST_AUTO_TEST_CASE(MovingKink_FollowsTheExactKink) {
   BOOST_TEST(std::abs(centre - v * 4) <= 2e-3);
 }
 
-BOOST_AUTO_TEST_CASE(Readme_ShowsTheCompiledExampleVerbatim) {
+BOOST_AUTO_TEST_CASE(Docs_ShowTheCompiledExampleVerbatim) {
   const std::string file =
       std::string(VIVP_SOURCE_DIR) + "/tests/example_field_density.cc";
   const std::string code = readme_quote::Example(file);
-  BOOST_TEST(readme_quote::ReadmeShows(code), "README does not show " << file);
+  BOOST_TEST(readme_quote::DocShows("docs/fields.md", code),
+             "docs/fields.md does not show " << file);
   int lines = 0;
   for (char c : code) lines += c == '\n';
   BOOST_TEST(lines <= 30);

@@ -1,6 +1,7 @@
-// The README shows some sources verbatim (the examples it teaches with);
-// these tests read the source, cut out what the README quotes and look for
-// it there as a fenced code block. Include after <boost/test/unit_test.hpp>.
+// The README and some pages of docs/ show sources verbatim (the examples
+// they teach with); these tests read the source, cut out what the document
+// quotes and look for it there as a fenced code block. Include after
+// <boost/test/unit_test.hpp>.
 #pragma once
 
 #include <fstream>
@@ -28,12 +29,18 @@ inline std::string Example(const std::string& path) {
   return s.substr(b + begin.size(), e - b - begin.size());
 }
 
+// Whether the document `doc` (a path in the source tree, e.g.
+// "docs/fields.md") holds `code` as a fenced block in `language`.
+inline bool DocShows(const std::string& doc, const std::string& code,
+                     const std::string& language = "cpp") {
+  const std::string text = Slurp(std::string(VIVP_SOURCE_DIR "/") + doc);
+  return text.find("```" + language + "\n" + code + "```") != std::string::npos;
+}
+
 // Whether README.md holds `code` as a fenced block in `language`.
 inline bool ReadmeShows(const std::string& code,
                         const std::string& language = "cpp") {
-  static const std::string readme = Slurp(VIVP_SOURCE_DIR "/README.md");
-  return readme.find("```" + language + "\n" + code + "```") !=
-         std::string::npos;
+  return DocShows("README.md", code, language);
 }
 
 }  // namespace readme_quote

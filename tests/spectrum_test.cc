@@ -120,7 +120,7 @@ BOOST_DATA_TEST_CASE(JordanStructure_MatchesExactRanks_AndDbarHasNoZeroModes,
   BOOST_TEST(sbar.min_real_part > 0.0);
   // The real eigenvalues of D̄: the affine eigenvalue 1 alone for even N;
   // odd N adds one more, above 1 (measured at N = 17: 4.159, 5.783, 6.249,
-  // 7.883 for SBP21/42/63/84; reported in the README).
+  // 7.883 for SBP21/42/63/84; reported in docs/method.md §2).
   const auto& real = sbar.real_eigenvalues;
   BOOST_TEST_MESSAGE(c.name << " N = " << c.n << ": " << real.size()
                             << " real eigenvalue(s) of D̄, largest "
