@@ -263,6 +263,19 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
       best.floor = floor_of(nx);
       report.cheapest.push_back(best);
     }
+    // A window's cost per time step against one Gauss4 step at the same Δt
+    // on the same grid: Gauss4 run with the variational step count.
+    const FieldWorkBest& v = report.cheapest[report.cheapest.size() -
+                                             FieldWorkFamilies().size()];
+    if (v.found) {
+      FieldStepCost c{target, nx, v.run.config, v.run.steps,
+                      v.run.seconds / double(v.run.steps)};
+      FieldWorkRun g = mol(p, "gauss4", v.run.steps, 0);
+      retime(g, [&] { return mol(p, "gauss4", v.run.steps, 0); });
+      c.gauss4_seconds_per_step = g.seconds / double(g.steps);
+      c.gauss4_converged = g.converged;
+      report.step_costs.push_back(c);
+    }
   }
   return report;
 }

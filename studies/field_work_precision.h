@@ -54,10 +54,23 @@ struct FieldWorkBest {
   std::string why;   // when not found
 };
 
+// Per target: the cheapest variational run's cost per time step, and one
+// Gauss4 step's at the same Δt on the same grid (Gauss4 run with the same
+// step count, timed as a median).
+struct FieldStepCost {
+  double target = 0;
+  int space_points = 0;
+  std::string config;
+  long long steps = 0;
+  double seconds_per_step = 0, gauss4_seconds_per_step = 0;
+  bool gauss4_converged = false;
+};
+
 struct FieldWorkReport {
   FieldWorkOptions options;
   std::vector<FieldWorkRun> runs;  // every run of every search
   std::vector<FieldWorkBest> cheapest;
+  std::vector<FieldStepCost> step_costs;
 };
 
 // The families, in table order: "variational" (the cheapest over SBP21,

@@ -54,18 +54,18 @@ bool HasConstantBlocks(const Density& density) {
   return true;
 }
 
-// The blocks averaged over the window with the weights Hᵗ_i Hˣ_j at the
-// fields v (FieldSystem::Fields); symmetrized.
+// The blocks averaged with the weights Hᵗ_i Hˣ_j at the fields v
+// (FieldSystem::Fields), over the time slices [0, slices); symmetrized.
 template <class System>
-DensityBlocks MeanBlocks(const System& sys,
-                         const action::FieldValues<double>& v) {
+DensityBlocks MeanBlocks(const System& sys, const action::FieldValues<double>& v,
+                         int slices) {
   constexpr int m = System::m;
   const auto& D = sys.time_operator().base();
   const auto& dx = sys.space_operator();
   Eigen::Matrix<double, 3 * m, 3 * m> sum;
   sum.setZero();
   double weight = 0;
-  for (int i = 0; i < sys.time_points(); ++i)
+  for (int i = 0; i < slices; ++i)
     for (int j = 0; j < sys.space_points(); ++j) {
       const double w = D.NormWeight(i) * dx.NormWeight(j);
       sum += w * sys.PointHessian(v, i, j);

@@ -26,6 +26,14 @@ SparseSolver ParseSparseSolver(std::string_view name) {
 }
 
 struct SparseLu::Impl {
+  Impl() {
+    // No iterative refinement inside UMFPACK's solve: Newton refines with
+    // the exact, matrix-free residual itself (solvers/variational/
+    // newton.h). With UMFPACK's default of up to two steps, each a sparse
+    // product and another solve, the solves took 93 % of a sine-Gordon
+    // march (bench/fields_bench --profile: 6.3 s of 6.8 s).
+    umfpack.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  }
   Eigen::UmfPackLU<Matrix> umfpack;
   Eigen::SparseLU<Matrix, Eigen::COLAMDOrdering<int>> eigen;
 };

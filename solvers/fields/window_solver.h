@@ -7,8 +7,10 @@
 //                    density's Hessian blocks — exact for a linear field with
 //                    constant coefficients (one factorization per spatial
 //                    mode for the whole march), otherwise averaged over the
-//                    window at the point of linearization, a preconditioner
-//                    whose chord steps Newton takes on the exact residual.
+//                    window's initial slice (then, if that stops
+//                    contracting, over the whole window at the current
+//                    iterate): a preconditioner whose chord steps Newton
+//                    takes on the exact residual.
 //                    When those stop contracting twice in one solve, the
 //                    window falls back to the sparse LU; every fallback is
 //                    counted (FieldSolution::fallbacks), never silent.
@@ -150,8 +152,12 @@ class ModesSolver {
       return;
     }
     if (constant_) return;
+    // The first linearization of a solve at the window's initial slice
+    // (Nx Hessians; the iterate's first slice is the initial data), a second
+    // one averaged over the whole window at the current iterate.
     system.Fields(y, values_);
-    blocks_ = MeanBlocks(system, values_);
+    blocks_ = MeanBlocks(system, values_,
+                         rounds_ == 1 ? 1 : system.time_points());
     factored_ = false;
   }
   bool Factorize() {
