@@ -39,13 +39,78 @@ struct PredictorReport {
   double error_v = 0;   // bound on the velocity error (second order)
 };
 
+// The integration every predictor shares: Dormand–Prince 5(4) with dense
+// output from s at τ = tau[0] to the nodes tau[0 … n), calling
+// store(state, i) at each; `step` is the first step to try and receives the
+// last accepted one (the next window's first). The error bound is that of
+// the header: 10·k times the steps' allowance, from the largest |x| and |v|
+// stored (scale_x, scale_v) over the window's span.
+template <class State, class Rhs, class Store>
+PredictorReport IntegrateToNodes(State& s, const Rhs& rhs, const double* tau,
+                                 int n, double tol_abs, double tol_rel,
+                                 double& step, const Store& store,
+                                 const double& scale_x, const double& scale_v) {
+  namespace odeint = boost::numeric::odeint;
+  // Far beyond any window of a non-stiff problem at a sane tolerance.
+  constexpr long kMaxSteps = 100000;
+  PredictorReport r;
+  auto fail = [&](std::string why) {
+    step = 0;
+    r.ok = false;
+    r.failure =
+        "the predictor (Dormand–Prince 5(4) on the Euler–Lagrange "
+        "equations) failed: " +
+        std::move(why);
+    return r;
+  };
+  auto finite = [](const State& y) {
+    for (double e : y)
+      if (!std::isfinite(e)) return false;
+    return true;
+  };
+  auto stepper = odeint::make_dense_output(tol_abs, tol_rel,
+                                           odeint::runge_kutta_dopri5<State>());
+  const double span = tau[n - 1] - tau[0];
+  // The last window's final step size is a good first guess for this one.
+  const double first = step > 0 ? std::min(step, span) : span / 8;
+  try {
+    stepper.initialize(s, tau[0], first);
+    store(s, 0);
+    for (int i = 1; i < n; ++i) {
+      while (stepper.current_time() < tau[i]) {
+        stepper.do_step(rhs);
+        if (++r.steps > kMaxSteps)
+          return fail(
+              "more than 10^5 steps in one window (a stiff or singular "
+              "equation of motion)");
+        if (!finite(stepper.current_state()))
+          return fail("non-finite state " +
+                      std::to_string(stepper.current_time()) +
+                      " after the window's start");
+      }
+      stepper.calc_state(tau[i], s);
+      store(s, i);
+    }
+    step = stepper.current_time_step();
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+  // Ten times the steps' error allowance: the allowance bounds the error
+  // estimate of dopri5's 4th-order member at each step's end, while the
+  // nodes come from its dense output between steps (measured: at 1e-4 an
+  // end velocity 2.5 times off the undamped bound, anharmonic oscillator,
+  // SBP84 grid of 4097 points).
+  const double k = 10.0 * double(std::max(r.steps, 1L));
+  r.error_x = k * (tol_abs + tol_rel * (scale_x + span * scale_v));
+  r.error_v = k * (tol_abs + tol_rel * scale_v * 2);
+  return r;
+}
+
 template <class P>
 class Predictor {
  public:
   static constexpr int d = P::kDim;
   using State = std::array<double, 2 * d>;
-  // Far beyond any window of a non-stiff problem at a sane tolerance.
-  static constexpr long kMaxSteps = 100000;
 
   Predictor(const P& problem, int order) : problem_(problem), order_(order) {}
 
@@ -55,51 +120,17 @@ class Predictor {
   PredictorReport Run(const double* x0, const double* v0, const double* tau,
                       int n, double tol_abs, double tol_rel, double* x,
                       double* v) {
-    namespace odeint = boost::numeric::odeint;
-    PredictorReport r;
     State s{};
     for (int c = 0; c < d; ++c) {
       s[c] = x0[c];
       s[d + c] = order_ == 2 ? v0[c] : 0.0;
     }
     auto rhs = [this](const State& y, State& dy, double) { Rhs(y, dy); };
-    auto stepper = odeint::make_dense_output(
-        tol_abs, tol_rel, odeint::runge_kutta_dopri5<State>());
-    const double span = tau[n - 1] - tau[0];
-    // The last window's final step size is a good first guess for this one.
-    const double first = step_ > 0 ? std::min(step_, span) : span / 8;
     double scale_x = 0, scale_v = 0;
-    try {
-      stepper.initialize(s, tau[0], first);
-      Store(s, 0, x, v, scale_x, scale_v);
-      for (int i = 1; i < n; ++i) {
-        while (stepper.current_time() < tau[i]) {
-          stepper.do_step(rhs);
-          if (++r.steps > kMaxSteps)
-            return Fail(r,
-                        "more than 10^5 steps in one window (a stiff or "
-                        "singular equation of motion)");
-          if (!Finite(stepper.current_state()))
-            return Fail(r, "non-finite state " +
-                               std::to_string(stepper.current_time()) +
-                               " after the window's start");
-        }
-        stepper.calc_state(tau[i], s);
-        Store(s, i, x, v, scale_x, scale_v);
-      }
-      step_ = stepper.current_time_step();
-    } catch (const std::exception& e) {
-      return Fail(r, e.what());
-    }
-    // Ten times the steps' error allowance: the allowance bounds the error
-    // estimate of dopri5's 4th-order member at each step's end, while the
-    // nodes come from its dense output between steps (measured: at 1e-4 an
-    // end velocity 2.5 times off the undamped bound, anharmonic oscillator,
-    // SBP84 grid of 4097 points).
-    const double k = 10.0 * double(std::max(r.steps, 1L));
-    r.error_x = k * (tol_abs + tol_rel * (scale_x + span * scale_v));
-    r.error_v = k * (tol_abs + tol_rel * scale_v * 2);
-    return r;
+    return IntegrateToNodes(
+        s, rhs, tau, n, tol_abs, tol_rel, step_,
+        [&](const State& y, int i) { Store(y, i, x, v, scale_x, scale_v); },
+        scale_x, scale_v);
   }
 
   // ∂L/∂ẋ at (x, v): the momentum, the continuum value of −λ3 at a window's
@@ -131,22 +162,6 @@ class Predictor {
       scale_x = std::max(scale_x, std::abs(x[i * d + c]));
       scale_v = std::max(scale_v, std::abs(v[i * d + c]));
     }
-  }
-
-  static bool Finite(const State& s) {
-    for (double e : s)
-      if (!std::isfinite(e)) return false;
-    return true;
-  }
-
-  PredictorReport Fail(PredictorReport& r, std::string why) {
-    step_ = 0;
-    r.ok = false;
-    r.failure =
-        "the predictor (Dormand–Prince 5(4) on the Euler–Lagrange "
-        "equations) failed: " +
-        std::move(why);
-    return r;
   }
 
   const P& problem_;
