@@ -82,6 +82,9 @@ double FastestFieldFrequency(const Density& density,
   std::vector<double> phi_x(phi.size());
   dx.ApplyComponents(m, phi, phi_x);
   double omega2 = 0;
+  // One component: the eigenvalues are quotients; more: the small dense
+  // solver (its allocations were a tenth of this check's time for m = 1).
+  Eigen::MatrixXd mass(m, m), c(m, m), k(m, m);
   for (int j = 0; j < n; ++j) {
     double z[K];
     for (int a = 0; a < m; ++a) {
@@ -91,11 +94,19 @@ double FastestFieldFrequency(const Density& density,
     }
     const auto h = autodiff::Hessian<double, K>(
         [&](const auto* w) { return density(w, w + m, w + 2 * m); }, z);
-    const Eigen::MatrixXd mass = h.hessian.template block<m, m>(m, m);
-    const Eigen::MatrixXd c = -h.hessian.template block<m, m>(2 * m, 2 * m);
-    const Eigen::MatrixXd k = -h.hessian.template block<m, m>(0, 0);
-    const double wc = linalg::LargestGeneralizedEigenvalue(c, mass);
-    const double wk = linalg::LargestGeneralizedEigenvalue(k, mass);
+    double wc, wk;
+    if constexpr (m == 1) {
+      // As LargestGeneralizedEigenvalue: the largest of 0 and the quotient.
+      const double mj = h.hessian(1, 1);
+      wc = mj != 0 ? std::max(0.0, -h.hessian(2, 2) / mj) : 0.0;
+      wk = mj != 0 ? std::max(0.0, -h.hessian(0, 0) / mj) : 0.0;
+    } else {
+      mass = h.hessian.template block<m, m>(m, m);
+      c = -h.hessian.template block<m, m>(2 * m, 2 * m);
+      k = -h.hessian.template block<m, m>(0, 0);
+      wc = linalg::LargestGeneralizedEigenvalue(c, mass);
+      wk = linalg::LargestGeneralizedEigenvalue(k, mass);
+    }
     omega2 = std::max(omega2, std::max(wc, 0.0) * rho * rho + wk);
   }
   return std::sqrt(std::max(omega2, 0.0));
