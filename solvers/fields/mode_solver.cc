@@ -56,6 +56,19 @@ ModeSolver::ModeSolver(const sbp::RegularizedOperator<double>& dt,
   }
   for (int i = 0; i < nt_; ++i)
     for (const auto& [k, v] : rows[i]) kt_.push_back({i, k, v});
+  // Modes that share a time system (the cosine and sine of one Fourier
+  // mode) are solved together.
+  partner_.assign(modes_->count(), -1);
+  std::vector<int> seen(modes_->distinct(), -1);
+  for (int q = 0; q < modes_->count(); ++q) {
+    int& s = seen[modes_->system_of(q)];
+    if (s < 0) {
+      s = q;
+    } else if (partner_[s] < 0) {
+      partner_[s] = q;
+      partner_[q] = s;
+    }
+  }
 }
 
 int ModeSolver::size() const {
@@ -152,13 +165,28 @@ void ModeSolver::Solve(double* b) const {
   for (int j = first; j < first + count; ++j)
     for (int r = nm; r < B; ++r) b[std::size_t(j) * B + r] *= hx_[j];
   modes_->Forward(b, B, B);
-  work_.resize(B);
+  // The data rows first, as in the factored matrix.
+  auto gather = [&](const double* blk, double* w) {
+    std::copy(blk + nm, blk + B, w);
+    std::copy(blk, blk + nm, w + 2 * m_);
+  };
+  work_.resize(2 * std::size_t(B));
   for (int q = 0; q < count; ++q) {
+    const int k = modes_->system_of(q);
+    const int other = partner_[q];
+    if (other >= 0 && other < q) continue;  // solved with its partner
     double* blk = b + std::size_t(first + q) * B;
-    std::copy(blk + nm, blk + B, work_.begin());
-    std::copy(blk, blk + nm, work_.begin() + 2 * m_);
-    lu_[modes_->system_of(q)]->Solve(work_.data());
-    std::copy(work_.begin(), work_.end(), blk);
+    gather(blk, work_.data());
+    if (other < 0) {
+      lu_[k]->Solve(work_.data());
+      std::copy(work_.begin(), work_.begin() + B, blk);
+      continue;
+    }
+    double* blk2 = b + std::size_t(first + other) * B;
+    gather(blk2, work_.data() + B);
+    lu_[k]->SolvePair(work_.data(), work_.data() + B);
+    std::copy(work_.begin(), work_.begin() + B, blk);
+    std::copy(work_.begin() + B, work_.end(), blk2);
   }
   modes_->Inverse(b, B, B);
   if (eliminate) Multipliers(b);

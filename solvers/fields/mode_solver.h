@@ -94,6 +94,7 @@ class ModeSolver {
     double v;
   };
   std::vector<Entry> kt_;  // K_t = D̄ᵀHᵗD̄, summed per (i, k)
+  std::vector<int> partner_;  // the mode sharing q's time system, or −1
   DensityBlocks blocks_;
   int kl_ = 0, ku_ = 0;
   std::vector<linalg::BandedMatrix<double>> matrices_;

@@ -63,6 +63,47 @@ class BandedLu {
     }
   }
 
+  // b0 <- A^{-1} b0 and b1 <- A^{-1} b1 (double only): the substitutions of
+  // Substitute for two right-hand sides at once, in the same order of
+  // operations for each (the two halves of a Fourier mode share a matrix;
+  // solutions equal Solve's to the bit).
+  void SolvePair(double* b0, double* b1) const
+    requires std::is_same_v<Real, double>
+  {
+    const auto& lu = *a_;
+    const int n = lu.size(), kl = lu.lower(), ld = lu.leading_dimension();
+    const int kd = kl + lu.upper();
+    const double* ab = lu.data();
+    const int* pivots = pivots_.data();
+    for (int j = 0; j + 1 < n; ++j) {
+      const int l = pivots[j] - 1;
+      if (l != j) {
+        std::swap(b0[l], b0[j]);
+        std::swap(b1[l], b1[j]);
+      }
+      const int lm = std::min(kl, n - 1 - j);
+      const double* m = ab + std::size_t(j) * ld + kd + 1;
+      const double c0 = b0[j], c1 = b1[j];
+      for (int i = 0; i < lm; ++i) {
+        b0[j + 1 + i] -= m[i] * c0;
+        b1[j + 1 + i] -= m[i] * c1;
+      }
+    }
+    for (int j = n - 1; j >= 0; --j) {
+      const double* u = ab + std::size_t(j) * ld;
+      const double inv = inverse_diagonal_[j];
+      // Substitute skips a zero entry; the products below are then zero too
+      // (a finite factor times 0), so skipping or not gives the same bits.
+      b0[j] *= inv;
+      b1[j] *= inv;
+      const double t0 = b0[j], t1 = b1[j];
+      for (int i = std::max(0, j - kd); i < j; ++i) {
+        b0[i] -= t0 * u[kd + i - j];
+        b1[i] -= t1 * u[kd + i - j];
+      }
+    }
+  }
+
   // b <- A^{-1} b from dgbtrf's factors of A (in `lu`, pivots 1-based): the
   // two substitutions of LAPACK's dgbtrs (trans = 'N', one right-hand side),
   // in the same order of operations, with U's diagonal divided or, when
