@@ -67,9 +67,8 @@ class BandedLu {
   // Substitute for two right-hand sides at once, in the same order of
   // operations for each (the two halves of a Fourier mode share a matrix;
   // solutions equal Solve's to the bit).
-  void SolvePair(double* b0, double* b1) const
-    requires std::is_same_v<Real, double>
-  {
+  void SolvePair(double* b0,
+                 double* b1) const requires std::is_same_v<Real, double> {
     const auto& lu = *a_;
     const int n = lu.size(), kl = lu.lower(), ld = lu.leading_dimension();
     const int kd = kl + lu.upper();

@@ -44,6 +44,7 @@
 #include "solvers/variational/march_adaptive.h"
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/march_uniform.h"
+#include "solvers/variational/point_window.h"
 #include "solvers/variational/solve_ivp.h"
 
 namespace vivp::variational {
@@ -79,10 +80,11 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   InitialData state = initial;
   const int order = detail::CheckInitialData(problem, state);
   if (order == 1) state.v.clear();
-  detail::UniformMarch<P> uniform(problem, grid, options, observer, out, order,
-                                  min_points);
-  detail::AdaptiveMarch<P> controlled(problem, grid, options, observer, out,
-                                      order, min_points);
+  detail::PointWindow<P> window(problem, grid.op, grid.sigma0, options, order);
+  detail::UniformMarch<detail::PointWindow<P>> uniform(
+      window, grid, options, observer, out, min_points);
+  detail::AdaptiveMarch<detail::PointWindow<P>> controlled(
+      window, grid, options, observer, out, min_points);
   const bool ok = adaptive ? controlled.Run(state) : uniform.Run(state);
   const std::vector<double>& xs = adaptive ? controlled.xs_ : uniform.xs_;
   const std::vector<double>& vs = adaptive ? controlled.vs_ : uniform.vs_;

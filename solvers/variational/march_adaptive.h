@@ -11,13 +11,12 @@
 
 namespace vivp::variational::detail {
 
-template <class P>
-class AdaptiveMarch : public MarchCore<P> {
+template <class WindowT>
+class AdaptiveMarch : public MarchCore<WindowT> {
  public:
-  using Core = MarchCore<P>;
+  using Core = MarchCore<WindowT>;
   using Core::Core;
   using typename Core::Attempt;
-  static constexpr int d = P::kDim;
 
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
@@ -29,9 +28,9 @@ class AdaptiveMarch : public MarchCore<P> {
     while (t < grid_.t_end) {
       const Window w = NextWindow(t, dt, state);
       if (!CanContinue(t, w, rejected_in_row)) return false;
-      Attempt a = this->Solve(state, w.points, w.dt, false,
+      Attempt a = this->Solve(state, t, w.points, w.dt, false,
                               PredictorTolerance(), false);
-      if (a.ok() && doubling) a = Doubled(state, a);
+      if (a.ok() && doubling) a = Doubled(state, t, a);
       const double err = a.ok() ? ErrorNorm(state, a) : NAN;
       if (!a.ok() || !(err <= 1)) {
         ++out_.rejected;
@@ -55,13 +54,14 @@ class AdaptiveMarch : public MarchCore<P> {
   }
 
  private:
+  using Core::d_;
   using Core::grid_;
   using Core::min_points_;
   using Core::options_;
   using Core::order_;
   using Core::out_;
-  using Core::problem_;
   using Core::Text;
+  using Core::window_;
 
   // The next window from t: W points at the step dt, which is first kept at
   // half the stability limit of Δt·ω (resolution.h); the last windows are
@@ -74,7 +74,7 @@ class AdaptiveMarch : public MarchCore<P> {
   Window NextWindow(double t, double& dt, const InitialData& state) const {
     if (order_ == 2) {
       const double omega =
-          FastestFrequency(problem_, state.x.data(), state.v.data());
+          window_.FastestFrequency(state.x.data(), state.v.data());
       if (omega > 0) dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
     }
     const int w = int(options_.window_points);
@@ -154,10 +154,12 @@ class AdaptiveMarch : public MarchCore<P> {
 
   // SBP21: the window again at Δt/2; the difference of the two end states
   // estimates the error of the coarse one, and the fine one is kept.
-  Attempt Doubled(const InitialData& state, const Attempt& coarse) {
-    Attempt fine = this->Solve(state, 2 * coarse.points - 1, 0.5 * coarse.dt,
-                               false, PredictorTolerance(), false);
+  Attempt Doubled(const InitialData& state, double t0, const Attempt& coarse) {
+    Attempt fine =
+        this->Solve(state, t0, 2 * coarse.points - 1, 0.5 * coarse.dt, false,
+                    PredictorTolerance(), false);
     if (!fine.ok()) return fine;
+    const int d = d_;
     for (int c = 0; c < d; ++c) {
       fine.est_x[c] = std::abs(coarse.x_end[c] - fine.x_end[c]);
       fine.est_v[c] = std::abs(coarse.v_end[c] - fine.v_end[c]);
@@ -169,6 +171,7 @@ class AdaptiveMarch : public MarchCore<P> {
   // value being the larger of the window's start and end.
   double ErrorNorm(const InitialData& state, const Attempt& a) const {
     const Tolerance& tol = options_.tolerance;
+    const int d = d_;
     double err = 0;
     for (int c = 0; c < d; ++c) {
       err = std::max(err, a.est_x[c] / tol.Allowance(std::max(
@@ -189,6 +192,7 @@ class AdaptiveMarch : public MarchCore<P> {
     const Tolerance& tol = options_.tolerance;
     double worst = 0, est = 0, level = 0, allowance = 0;
     bool velocity = false;
+    const int d = d_;
     for (int c = 0; c < d; ++c) {
       const double ax = tol.Allowance(
           std::max(std::abs(state.x[c]), std::abs(a.end.position[c])));
@@ -222,7 +226,7 @@ class AdaptiveMarch : public MarchCore<P> {
       return std::min(options_.initial_step, longest);
     if (order_ != 2) return longest / 8;
     const double omega =
-        FastestFrequency(problem_, state.x.data(), state.v.data());
+        window_.FastestFrequency(state.x.data(), state.v.data());
     if (!(omega > 0)) return longest / 8;
     // The estimates scale like (Δt·ω)^q: start near where they meet the
     // tolerance; the controller corrects the rest.

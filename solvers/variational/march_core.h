@@ -1,7 +1,8 @@
 // What both ways of marching share (march.h): solving and checking a window
 // (window_solve.h), accepting it — its report, its nodes to the observer and
 // the trajectory, the hand-off — and reporting a failure with its window,
-// reason and residual.
+// reason and residual. The same for a point-mechanics problem and a field:
+// the Window (point_window.h, solvers/fields/field_window.h) is what varies.
 #pragma once
 
 #include <algorithm>
@@ -16,34 +17,34 @@
 
 namespace vivp::variational::detail {
 
-template <class P>
+template <class WindowT>
 class MarchCore {
  public:
-  static constexpr int d = P::kDim;
-  using Attempt = WindowAttempt<d>;
+  using Attempt = WindowAttempt;
 
-  MarchCore(const P& problem, const Grid& grid, const MarchOptions& options,
-            const NodeObserver& observer, MarchResult& out, int order,
-            int min_points)
-      : problem_(problem),
+  MarchCore(WindowT& window, const Grid& grid, const MarchOptions& options,
+            const NodeObserver& observer, MarchResult& out, int min_points)
+      : window_(window),
         grid_(grid),
         options_(options),
         observer_(observer),
         out_(out),
-        order_(order),
+        d_(window.dim()),
+        order_(window.order()),
         min_points_(min_points),
-        solver_(problem, grid.op, grid.sigma0, options, order) {}
+        solver_(window, options) {}
 
   std::vector<double> xs_, vs_;  // kept nodes, node-major
 
  protected:
   bool WantNodes() const { return bool(observer_) || options_.keep_trajectory; }
 
-  // `uniform` adds the resolution check of window_solve.h.
-  Attempt Solve(const InitialData& state, int points, double dt, bool fresh,
-                Tolerance predictor, bool uniform) {
-    Attempt a = solver_.Solve(state, points, dt, fresh, WantNodes(), predictor,
-                              uniform);
+  // The window from `state` at time t0; `uniform` adds the resolution check
+  // of window_solve.h.
+  Attempt Solve(const InitialData& state, double t0, int points, double dt,
+                bool fresh, Tolerance predictor, bool uniform) {
+    Attempt a = solver_.Solve(state, t0, points, dt, fresh, WantNodes(),
+                              predictor, uniform);
     out_.predictor_steps += a.predictor_steps;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
     if (!fresh && a.failure == WindowFailure::kNewton &&
@@ -52,7 +53,7 @@ class MarchCore {
       // once more with a Jacobian of this window's own. (A solver that
       // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
-      return Solve(state, points, dt, true, predictor, uniform);
+      return Solve(state, t0, points, dt, true, predictor, uniform);
     }
     return a;
   }
@@ -72,6 +73,7 @@ class MarchCore {
     w.fallbacks = depth;
     w.dt = a.dt;
     w.error_norm = err;
+    const int d = d_;
     for (int c = 0; c < d; ++c) {
       w.position_error_estimate =
           std::max(w.position_error_estimate, a.est_x[c]);
@@ -88,13 +90,14 @@ class MarchCore {
     out_.min_step = out_.min_step == 0 ? a.dt : std::min(out_.min_step, a.dt);
     out_.max_step = std::max(out_.max_step, a.dt);
     if (WantNodes()) {
-      double x[d], v[d];
+      node_x_.resize(d);
+      node_v_.resize(d);
       for (long long i = 0; i < count; ++i) {
         for (int c = 0; c < d; ++c) {
-          x[c] = a.X(int(i * stride), c);
-          v[c] = a.V(int(i * stride), c);
+          node_x_[c] = a.X(int(i * stride), c);
+          node_v_[c] = a.V(int(i * stride), c);
         }
-        Emit(time_of(i), x, v);
+        Emit(time_of(i), node_x_.data(), node_v_.data());
       }
     }
     out_.points += count;
@@ -134,11 +137,12 @@ class MarchCore {
     return s.str();
   }
 
-  const P& problem_;
+  WindowT& window_;
   const Grid& grid_;
   const MarchOptions& options_;
   const NodeObserver& observer_;
   MarchResult& out_;
+  int d_;  // components of the state
   int order_;
   int min_points_;
 
@@ -147,14 +151,13 @@ class MarchCore {
     if (observer_) observer_(t, x, v);
     if (options_.keep_trajectory) {
       out_.t.push_back(t);
-      for (int c = 0; c < d; ++c) {
-        xs_.push_back(x[c]);
-        vs_.push_back(v[c]);
-      }
+      xs_.insert(xs_.end(), x, x + d_);
+      vs_.insert(vs_.end(), v, v + d_);
     }
   }
 
-  WindowSolver<P> solver_;
+  WindowSolver<WindowT> solver_;
+  std::vector<double> node_x_, node_v_;
 };
 
 }  // namespace vivp::variational::detail

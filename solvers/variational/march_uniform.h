@@ -10,10 +10,10 @@
 
 namespace vivp::variational::detail {
 
-template <class P>
-class UniformMarch : public MarchCore<P> {
+template <class WindowT>
+class UniformMarch : public MarchCore<WindowT> {
  public:
-  using Core = MarchCore<P>;
+  using Core = MarchCore<WindowT>;
   using Core::Core;
   using typename Core::Attempt;
 
@@ -42,7 +42,7 @@ class UniformMarch : public MarchCore<P> {
   using Core::options_;
   using Core::order_;
   using Core::out_;
-  using Core::problem_;
+  using Core::window_;
 
   // The predictor on a uniform grid: enough to tell a branch of the discrete
   // equations from another (they differ by the size of the solution), to
@@ -56,7 +56,7 @@ class UniformMarch : public MarchCore<P> {
   double StepRatio(const InitialData& state) const {
     if (order_ != 2) return 0.0;
     const double dt = (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
-    return dt * FastestFrequency(problem_, state.x.data(), state.v.data()) /
+    return dt * window_.FastestFrequency(state.x.data(), state.v.data()) /
            StabilityLimit(grid_.op);
   }
 
@@ -84,8 +84,8 @@ class UniformMarch : public MarchCore<P> {
               bool last_of_march) {
     const double t0 = T(first), t1 = T(first + points - 1);
     const double dt = (t1 - t0) / double((points - 1) * refine_);
-    const Attempt a = this->Solve(state, int((points - 1) * refine_ + 1), dt,
-                                  false, kPredictorTolerance, true);
+    const Attempt a = this->Solve(state, t0, int((points - 1) * refine_ + 1),
+                                  dt, false, kPredictorTolerance, true);
     if (a.ok()) {
       this->Accept(a, state, t0, refine_, last_of_march ? points : points - 1,
                    depth, 0.0, [&](long long i) { return T(first + i); });

@@ -53,21 +53,30 @@ enum class WindowFailure {
 };
 
 // A solved window before it is accepted: nodes on its solve grid, the
-// hand-off state, the estimates and the outcome of the checks.
-template <int d>
+// hand-off state, the estimates and the outcome of the checks, for a system
+// of n components (a point-mechanics problem's d coordinates, or a field's
+// Nx·m values of a time slice).
 struct WindowAttempt {
-  using State = std::array<double, d>;
+  using State = std::vector<double>;
+  explicit WindowAttempt(int components = 0)
+      : n(components),
+        x_end(components),
+        v_end(components),
+        est_x(components),
+        est_v(components),
+        roundoff_v(components) {}
+  int n;
   WindowFailure failure = WindowFailure::kNone;
   std::string why;  // empty on success
   double residual = std::numeric_limits<double>::quiet_NaN();
   int points = 0;
   double dt = 0;
   int iterations = 0, corrections = 0;
-  State x_end{}, v_end{};    // x_N, (Dx)_N
-  State est_x{}, est_v{};    // embedded estimates of their errors
-  State roundoff_v{};        // the round-off level of (Dx)_N (window_engine.h)
+  State x_end, v_end;        // x_N, (Dx)_N
+  State est_x, est_v;        // embedded estimates of their errors
+  State roundoff_v;          // the round-off level of (Dx)_N (window_engine.h)
   CorrectedEnd<double> end;  // hand-off
-  std::vector<double> x, v;  // nodes (node-major, points·d), if kept
+  std::vector<double> x, v;  // nodes (node-major, points·n), if kept
   double distance = 0;       // worst |H − P| / allowed of check 2
   double deviation = 0;      // max over nodes of |x_i − P(t_i)|
   long predictor_steps = 0;
@@ -77,8 +86,8 @@ struct WindowAttempt {
            failure == WindowFailure::kCheck ||
            failure == WindowFailure::kPredictor;
   }
-  double X(int i, int c) const { return x[i * d + c]; }
-  double V(int i, int c) const { return v[i * d + c]; }
+  double X(int i, int c) const { return x[std::size_t(i) * n + c]; }
+  double V(int i, int c) const { return v[std::size_t(i) * n + c]; }
 };
 
 // Three significant digits, for messages.
@@ -89,8 +98,8 @@ inline std::string ShortNumber(double v) {
   return s.str();
 }
 
-template <int d>
-std::string CheckFinite(const WindowAttempt<d>& a, int order) {
+inline std::string CheckFinite(const WindowAttempt& a, int order) {
+  const int d = a.n;
   bool ok = true;
   for (double v : a.x) ok = ok && std::isfinite(v);
   for (double v : a.v) ok = ok && std::isfinite(v);
@@ -104,11 +113,11 @@ std::string CheckFinite(const WindowAttempt<d>& a, int order) {
 
 // Check 2: the hand-off against the predictor's end state; records the worst
 // ratio of distance to allowance in a.distance.
-template <int d>
-std::string CheckConsistent(WindowAttempt<d>& a, const PredictorReport& pr,
-                            const double* pend_x, const double* pend_v,
-                            int order, bool sbp21) {
+inline std::string CheckConsistent(WindowAttempt& a, const PredictorReport& pr,
+                                   const double* pend_x, const double* pend_v,
+                                   int order, bool sbp21) {
   constexpr double kKappa = 2.0;
+  const int d = a.n;
   const double length = a.dt * double(a.points - 1);
   double sx = 0, sv = 0;
   for (int c = 0; c < d; ++c) {
@@ -154,10 +163,11 @@ std::string CheckConsistent(WindowAttempt<d>& a, const PredictorReport& pr,
 
 // Check 3: the window's measured local error against the solution's size
 // (px: the predictor's positions at the nodes).
-template <int d>
-std::string CheckResolved(const WindowAttempt<d>& a, const PredictorReport& pr,
-                          const double* pend_x, const std::vector<double>& px,
-                          double rho) {
+inline std::string CheckResolved(const WindowAttempt& a,
+                                 const PredictorReport& pr,
+                                 const double* pend_x,
+                                 const std::vector<double>& px, double rho) {
+  const int d = a.n;
   double scale = 0, dev = a.deviation;
   for (double v : px) scale = std::max(scale, std::abs(v));
   for (int c = 0; c < d; ++c)
