@@ -48,11 +48,7 @@ FieldRun Run(const FieldScene& s,
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.converged) return run;
   run.window_end.assign(sol.t.size(), 0);
-  std::size_t last = 0;
-  for (long long size :
-       fields::detail::WindowSizes(s.time_points, s.method.window_points,
-                                   sbp::Table(s.method.op).min_points))
-    run.window_end.at(last += std::size_t(size - 1)) = 1;
+  for (std::size_t k : sol.window_ends) run.window_end.at(k) = 1;
   run.columns = s.output.diagnostics;
   run.values.assign(run.columns.size(), {});
   const std::size_t n = std::size_t(dx.points()) * M;

@@ -57,8 +57,8 @@ bool HasConstantBlocks(const Density& density) {
 // The blocks averaged with the weights Hᵗ_i Hˣ_j at the fields v
 // (FieldSystem::Fields), over the time slices [0, slices); symmetrized.
 template <class System>
-DensityBlocks MeanBlocks(const System& sys, const action::FieldValues<double>& v,
-                         int slices) {
+DensityBlocks MeanBlocks(const System& sys,
+                         const action::FieldValues<double>& v, int slices) {
   constexpr int m = System::m;
   const auto& D = sys.time_operator().base();
   const auto& dx = sys.space_operator();

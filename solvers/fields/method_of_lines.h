@@ -122,6 +122,10 @@ class FieldAcceleration {
   }
 
   long long evaluations() const { return evaluations_; }
+  // M⁻¹ (the same at every point).
+  const Eigen::Matrix<double, m, m>& inverse_mass() const {
+    return inverse_mass_;
+  }
 
   void operator()(std::span<const double> phi, std::span<double> acc) const {
     ++evaluations_;

@@ -93,7 +93,7 @@ class ModeSolver {
     int i, k;
     double v;
   };
-  std::vector<Entry> kt_;  // K_t = D̄ᵀHᵗD̄, summed per (i, k)
+  std::vector<Entry> kt_;     // K_t = D̄ᵀHᵗD̄, summed per (i, k)
   std::vector<int> partner_;  // the mode sharing q's time system, or −1
   DensityBlocks blocks_;
   int kl_ = 0, ku_ = 0;

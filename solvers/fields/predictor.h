@@ -4,12 +4,23 @@
 // Dormand–Prince integration and error bound it shares). The equations are
 // those of the method of lines on the same spatial operator
 // (method_of_lines.h: M φ̈_j = ∂ℒ/∂φ(j) + (D_xᵀ Hˣ ∂ℒ/∂φ_x)_j / Hˣ_j), so
-// nothing is derived by hand here either.
+// nothing is derived by hand here either, with the boundary data of the
+// discrete action (core/action/field_boundary.h):
+//
+//   Dirichlet   the boundary point is the data: φ_b = g(t) wherever the
+//               acceleration reads it, and its own components stand still
+//               (the checks skip them);
+//   Neumann     the flux term Hᵗ[q_L φ(x_0) − q_R φ(x_N)] of the action adds
+//               ±M⁻¹ q(t)/Hˣ_b to the boundary point's acceleration, q the
+//               flux ∂ℒ/∂φ_x at the prescribed slope.
 #pragma once
 
+#include <Eigen/Core>
+#include <functional>
 #include <span>
 #include <vector>
 
+#include "core/action/field_boundary.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/space.h"
 #include "solvers/fields/method_of_lines.h"
@@ -23,41 +34,68 @@ class FieldPredictor {
   static constexpr int m = Density::kComponents;
   using State = std::vector<double>;
 
+  // The data of one end of an interval at time t: g or h of component a.
+  using Data = std::function<double(double t, int a)>;
+  struct End {
+    action::BoundaryKind kind = action::BoundaryKind::kNatural;
+    Data value;  // empty: 0
+  };
+
   // phi0, pi0: a state at which the density's form is checked (the march's
-  // initial data; method_of_lines.h).
+  // initial data; method_of_lines.h). ends: the left and right ends' data.
   FieldPredictor(const Density& density, const sbp::SpaceDerivative<double>& dx,
-                 std::span<const double> phi0, std::span<const double> pi0)
+                 std::span<const double> phi0, std::span<const double> pi0,
+                 const End ends[2] = nullptr)
       : density_(density),
         dx_(dx),
         n_(std::size_t(dx.points()) * m),
         acceleration_(density, dx, phi0, pi0),
-        acc_(n_) {}
+        acc_(n_),
+        work_(n_) {
+    if (ends) {
+      ends_[0] = ends[0];
+      ends_[1] = ends[1];
+    }
+  }
 
   int dim() const { return int(n_); }
 
-  // From (φ, φ_t) = (x0, v0) at τ = 0 to the nodes tau[0 … count), writing
-  // φ and φ_t slice-major into x and v (count·n values each).
-  variational::PredictorReport Run(const double* x0, const double* v0,
-                                   const double* tau, int count, double tol_abs,
-                                   double tol_rel, double* x, double* v) {
+  // From (φ, φ_t) = (x0, v0) at τ = 0, time t0, to the nodes tau[0 …
+  // count), writing φ and φ_t slice-major into x and v (count·n values
+  // each).
+  variational::PredictorReport Run(double t0, const double* x0,
+                                   const double* v0, const double* tau,
+                                   int count, double tol_abs, double tol_rel,
+                                   double* x, double* v) {
     State s(2 * n_);
     std::copy(x0, x0 + n_, s.begin());
     std::copy(v0, v0 + n_, s.begin() + n_);
-    auto rhs = [this](const State& y, State& dy, double) {
+    auto rhs = [this, t0](const State& y, State& dy, double tau_now) {
       std::copy(y.begin() + n_, y.end(), dy.begin());
-      acceleration_(std::span<const double>(y.data(), n_),
-                    std::span<double>(acc_));
+      std::copy(y.begin(), y.begin() + n_, work_.begin());
+      Dirichlet(t0 + tau_now, work_.data());
+      acceleration_(std::span<const double>(work_), std::span<double>(acc_));
+      Neumann(t0 + tau_now, acc_.data());
       std::copy(acc_.begin(), acc_.end(), dy.begin() + n_);
+      for (int side = 0; side < 2; ++side)
+        if (ends_[side].kind == action::BoundaryKind::kDirichlet)
+          for (int a = 0; a < m; ++a) {
+            dy[Point(side) * m + a] = 0;
+            dy[n_ + Point(side) * m + a] = 0;
+          }
     };
     double scale_x = 0, scale_v = 0;
     return variational::IntegrateToNodes(
         s, rhs, tau, count, tol_abs, tol_rel, step_,
         [&](const State& y, int i) {
+          double* xi = x + std::size_t(i) * n_;
+          double* vi = v + std::size_t(i) * n_;
+          std::copy(y.begin(), y.begin() + n_, xi);
+          std::copy(y.begin() + n_, y.end(), vi);
+          Dirichlet(t0 + tau[i], xi);
           for (std::size_t k = 0; k < n_; ++k) {
-            x[i * n_ + k] = y[k];
-            v[i * n_ + k] = y[n_ + k];
-            scale_x = std::max(scale_x, std::abs(y[k]));
-            scale_v = std::max(scale_v, std::abs(y[n_ + k]));
+            scale_x = std::max(scale_x, std::abs(xi[k]));
+            scale_v = std::max(scale_v, std::abs(vi[k]));
           }
         },
         scale_x, scale_v);
@@ -82,11 +120,43 @@ class FieldPredictor {
   }
 
  private:
+  int Point(int side) const { return side == 0 ? 0 : dx_.points() - 1; }
+
+  // φ at the Dirichlet ends set to the data at time t.
+  void Dirichlet(double t, double* phi) const {
+    for (int side = 0; side < 2; ++side)
+      if (ends_[side].kind == action::BoundaryKind::kDirichlet)
+        for (int a = 0; a < m; ++a)
+          phi[Point(side) * m + a] =
+              ends_[side].value ? ends_[side].value(t, a) : 0.0;
+  }
+
+  // The Neumann ends' flux terms added to the acceleration at time t:
+  // +M⁻¹q/Hˣ at x_0, −M⁻¹q/Hˣ at x_N (q = ∂ℒ/∂φ_x at φ_x = h(t)).
+  void Neumann(double t, double* acc) const {
+    auto call = [&](const auto* w) { return density_(w, w + m, w + 2 * m); };
+    for (int side = 0; side < 2; ++side) {
+      if (ends_[side].kind != action::BoundaryKind::kNeumann) continue;
+      double z[3 * m] = {};
+      for (int a = 0; a < m; ++a)
+        z[2 * m + a] = ends_[side].value ? ends_[side].value(t, a) : 0.0;
+      const auto g = autodiff::Gradient<double, 3 * m>(call, z).second;
+      Eigen::Matrix<double, m, 1> q;
+      for (int a = 0; a < m; ++a) q[a] = g[2 * m + a];
+      const int j = Point(side);
+      const Eigen::Matrix<double, m, 1> f =
+          acceleration_.inverse_mass() * q *
+          ((side == 0 ? 1.0 : -1.0) / dx_.NormWeight(j));
+      for (int a = 0; a < m; ++a) acc[j * m + a] += f[a];
+    }
+  }
+
   const Density& density_;
   const sbp::SpaceDerivative<double>& dx_;
   std::size_t n_;
   FieldAcceleration<Density> acceleration_;
-  std::vector<double> acc_;
+  mutable std::vector<double> acc_, work_;
+  End ends_[2];
   mutable std::vector<double> phi_x_;
   double step_ = 0;  // last accepted step, the next run's first
 };

@@ -21,6 +21,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "core/autodiff/pointwise.h"
@@ -74,8 +77,8 @@ inline double SpectralRadius(const sbp::SpaceDerivative<double>& dx) {
 template <class Density>
 double FastestFieldFrequency(const Density& density,
                              const sbp::SpaceDerivative<double>& dx, double rho,
-                             const std::vector<double>& phi,
-                             const std::vector<double>& phi_t) {
+                             std::span<const double> phi,
+                             std::span<const double> phi_t) {
   constexpr int m = Density::kComponents;
   constexpr int K = 3 * m;
   const int n = dx.points();
@@ -110,6 +113,23 @@ double FastestFieldFrequency(const Density& density,
     omega2 = std::max(omega2, std::max(wc, 0.0) * rho * rho + wk);
   }
   return std::sqrt(std::max(omega2, 0.0));
+}
+
+// Why Δt·ω at time t is beyond the time operator's limit (empty if it is
+// not), with the time points a grid over t_span needs; the check of every
+// field solve, before it starts and at every window's ends.
+inline std::string UnderResolved(const std::string& op, double limit, double dt,
+                                 double omega, double t, double t_span) {
+  const double od = dt * omega;
+  if (!(od > limit)) return "";
+  const long long need =
+      static_cast<long long>(std::ceil(t_span * omega / limit)) + 1;
+  std::ostringstream msg;
+  msg << "under-resolved: Δt·ω_max = " << od << " at t = " << t
+      << " exceeds the " << op << " limit " << limit << " (ω_max = " << omega
+      << " from the spatial grid and the potential); use at least " << need
+      << " time points";
+  return msg.str();
 }
 
 }  // namespace vivp::fields

@@ -14,22 +14,25 @@
 //   o.boundary.left = {vivp::action::BoundaryKind::kDirichlet,
 //                      [](double t, int) { return std::sin(t); }};
 //
-// Windows of W time points cover W − 1 intervals; the last one takes the
-// remainder (at least the operator's minimum). Each window is an IVP of its
-// own whose initial data are the previous window's corrected end state
-// (end_state.h). The Jacobian's pattern and ordering are shared by all
-// windows of one size, and the factorization too: Newton starts each window
-// with chord steps on the previous window's factors (for a linear field the
-// same matrix, so one factorization serves the whole march) and refactors
-// only when they stop contracting.
+// The march is that of point mechanics (solvers/variational/march.h): a
+// field is a Lagrangian density with components, and what differs is the
+// window (field_window.h) and its linear solver (window_solver.h). So each
+// window is an IVP of its own whose initial data are the previous window's
+// corrected end state, Newton starts from an independent integration of the
+// semi-discrete equations (predictor.h) and the converged window is checked
+// against it (solvers/variational/window_checks.h), a failing window is
+// solved again afresh and then split, and with a tolerance the march
+// chooses each window's Δt from the windows' embedded estimates (error
+// control, docs/error_control.md). On a uniform grid, windows of W time
+// points cover W − 1 intervals; the last one takes the remainder (at least
+// the operator's minimum).
 //
 // Before solving, the grid is checked against the resolution limit
-// (resolution.h) at the initial state; a march checks every window's
-// initial state. An under-resolved run is reported as not converged with
-// the number of time points it needs, never returned as a solution.
+// (resolution.h) at the initial state, and every window again at its ends.
+// An under-resolved run is reported as not converged with the number of
+// time points it needs, never returned as a solution.
 #pragma once
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -39,36 +42,25 @@
 #include <string>
 #include <vector>
 
-#include "core/action/field_system.h"
 #include "core/sbp/builder.h"
-#include "core/sbp/regularized.h"
 #include "solvers/fields/end_state.h"
+#include "solvers/fields/field_window.h"
 #include "solvers/fields/input.h"
 #include "solvers/fields/resolution.h"
-#include "solvers/fields/window_solver.h"
-#include "solvers/variational/newton.h"
+#include "solvers/variational/march_adaptive.h"
+#include "solvers/variational/march_uniform.h"
 #include "solvers/variational/resolution.h"
+#include "solvers/variational/step_control.h"
 
 namespace vivp::fields {
 
 struct FieldGrid {
   std::string op = "sbp42";  // the time operator: sbp21, sbp42, sbp63, sbp84
-  long long points = 65;     // time points on [0, t_end]
+  long long points = 65;     // time points on [0, t_end] (uniform grid)
   double t_end = 1.0;
-  // Time points per window; 0 (or ≥ points) solves globally.
+  // Time points per window; 0 (or ≥ points) solves globally. Under error
+  // control every window has this many points (0: 16).
   long long window_points = 0;
-};
-
-// One end of an interval: the natural condition ∂L/∂φ_x = 0 of the discrete
-// action, or Dirichlet / Neumann data imposed by multipliers
-// (core/action/field_boundary.h); value(t, a) is g or h of component a
-// (empty: 0).
-struct FieldBoundarySide {
-  action::BoundaryKind kind = action::BoundaryKind::kNatural;
-  std::function<double(double t, int a)> value;
-};
-struct FieldBoundary {
-  FieldBoundarySide left, right;
 };
 
 struct FieldSolveOptions {
@@ -81,8 +73,16 @@ struct FieldSolveOptions {
   FieldBoundary boundary;  // natural unless set; an interval only
   bool keep_field = true;  // every slice of φ and φ_t in FieldSolution
   bool check_resolution = true;
+  // Error control (docs/error_control.md): each window's Δt chosen so that
+  // the local error of every node stays below absolute + relative·|value|,
+  // φ and φ_t at every spatial point; FieldGrid::points is then unused and
+  // the slices are not uniform in time. Disabled: the uniform grid.
+  variational::Tolerance tolerance;
+  double initial_step = 0;  // error control: the first Δt (0: from ω_max)
+  long long max_points = 100'000'000;  // error control: time nodes at most
   // Called after each accepted window with the windows done, their number
-  // and the time reached (a progress line; it runs on the solving thread).
+  // (0 under error control, where it is not known) and the time reached (a
+  // progress line; it runs on the solving thread).
   std::function<void(int done, int total, double t)> on_window;
 };
 
@@ -91,13 +91,24 @@ struct FieldSolution {
   std::string message;
   int nx = 0, components = 0;
   std::vector<double> t;                   // the kept slices' times
+  std::vector<std::size_t> window_ends;    // kept slices that end a window
   std::vector<double> phi, phi_t;          // kept slices, (s·Nx + j)·m + a
   FieldEnd end;                            // corrected state at t_end
   std::vector<double> end_phi_node;        // φ at the last node, uncorrected
   double dt = 0, omega_dt = 0, limit = 0;  // Δt·ω_max at the worst window
   int windows = 0, corrections = 0;
   long long factorizations = 0;  // Newton iterations: one each
-  std::string linear_solver;     // "modes" or "sparse-lu"
+  long long points = 0;          // time nodes returned
+  // The march's fallbacks (windows solved again afresh or split), windows
+  // rejected by error control, and windows that failed an a-posteriori
+  // check; the smallest and largest Δt (they differ under error control).
+  int march_fallbacks = 0, rejected = 0, check_failures = 0;
+  double min_step = 0, max_step = 0;
+  long predictor_steps = 0;
+  // Why the windows were not checked against an independent integration
+  // (empty: every window was).
+  std::string unchecked;
+  std::string linear_solver;  // "modes" or "sparse-lu"
   // The space-diagonalized solve: time systems factored (one per distinct
   // spatial mode and factorization), the bytes its factors hold, and the
   // windows that fell back to the sparse LU.
@@ -109,57 +120,13 @@ struct FieldSolution {
   double residual_norm = 0;         // worst window's |F|∞
   // Where the time goes: in Newton, the residuals, the Jacobian's assembly
   // (the sparse LU's) or the Hessian blocks (the modes'), factorizations and
-  // solves; around it, each window's operators, system and data (setup:
-  // the allocations), the resolution check, the corrected end state and the
-  // kept slices (hand-off), and the rest of the total.
+  // solves; around it, each window's system and data (setup), the
+  // resolution check, the corrected end state and kept slices (hand-off),
+  // the predictor, and the rest of the total (the march's own work).
   double seconds_assembly = 0, seconds_factor = 0, seconds_solve = 0,
          seconds_residual = 0, seconds_setup = 0, seconds_check = 0,
-         seconds_handoff = 0, seconds_total = 0;
+         seconds_handoff = 0, seconds_predictor = 0, seconds_total = 0;
 };
-
-namespace detail {
-
-// The window lengths (points) of a march of `points` over W-point windows.
-inline std::vector<long long> WindowSizes(long long points, long long w,
-                                          long long min_points) {
-  std::vector<long long> sizes;
-  if (w <= 0 || w >= points) return {points};
-  long long left = points - 1;  // intervals
-  while (left > 0) {
-    long long take = std::min(left, w - 1);
-    // A short remainder is merged into the last window.
-    if (left - take > 0 && left - take < min_points - 1) take = left;
-    sizes.push_back(take + 1);
-    left -= take;
-  }
-  return sizes;
-}
-
-// The window's boundary data at its nodes t0 + iΔt.
-template <class System>
-void SetBoundaryData(System& sys, const FieldBoundary& b, double t0,
-                     double dt) {
-  constexpr int m = System::m;
-  const FieldBoundarySide* sides[2] = {&b.left, &b.right};
-  for (int side = 0; side < 2; ++side) {
-    if (sides[side]->kind == action::BoundaryKind::kNatural) continue;
-    std::vector<double> values(std::size_t(sys.time_points()) * m, 0.0);
-    if (sides[side]->value)
-      for (int i = 0; i < sys.time_points(); ++i)
-        for (int a = 0; a < m; ++a) {
-          const double t = t0 + dt * i;
-          values[i * m + a] = sides[side]->value(t, a);
-          if (!std::isfinite(values[i * m + a]))
-            throw std::invalid_argument(
-                std::string(side == 0 ? "left" : "right") + " " +
-                action::BoundaryName(sides[side]->kind) +
-                " data: non-finite value at t = " + std::to_string(t));
-        }
-    sys.SetBoundary(side, sides[side]->kind, std::move(values));
-  }
-}
-
-}  // namespace detail
 
 template <class Density>
 FieldSolution SolveField(const Density& density,
@@ -173,128 +140,150 @@ FieldSolution SolveField(const Density& density,
   FieldSolution s;
   s.nx = dx.points();
   s.components = m;
+  const bool adaptive = options.tolerance.enabled();
   const auto& table = sbp::Table(grid.op);
-  if (grid.points < table.min_points)
+  if (!adaptive && grid.points < table.min_points)
     throw std::invalid_argument(
         grid.op + " needs at least " + std::to_string(table.min_points) +
         " time points, got " + std::to_string(grid.points));
   CheckFieldInput(grid.t_end, dx, m, phi0, pi0);
+  const variational::Tolerance& tol = options.tolerance;
+  if (adaptive &&
+      !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&
+        tol.absolute >= 0 && tol.relative >= 0))
+    throw std::invalid_argument(
+        "tolerance must be finite and non-negative (absolute, relative)");
   const std::size_t n = static_cast<std::size_t>(s.nx) * m;
-  s.dt = grid.t_end / double(grid.points - 1);
+  s.dt = adaptive ? 0 : grid.t_end / double(grid.points - 1);
   s.limit = variational::StabilityLimit(grid.op);
-  const auto sizes =
-      detail::WindowSizes(grid.points, grid.window_points, table.min_points);
-
   s.linear_solver = std::string(WindowLinearSolverName(options.linear));
-  ModesSolver<Density> modes(density, options.sparse);
-  SparseLuSolver sparse(options.sparse);
-  long long cached_size = -1, lu_retired = 0;
-  double t0 = 0;
-  std::vector<double> phi = std::move(phi0), pi = std::move(pi0);
-  auto finish = [&](bool ok, std::string message) {
-    s.converged = ok;
-    s.message = std::move(message);
-    s.mode_factorizations = modes.mode_factorizations();
-    s.factor_bytes = modes.factor_bytes();
-    s.fallbacks = int(modes.fallbacks);
-    s.lu_factorizations =
-        lu_retired + sparse.factorizations + modes.lu_factorizations();
-    s.jacobian_nonzeros = sparse.nonzeros();
-    s.seconds_total =
-        std::chrono::duration<double>(Clock::now() - start).count();
-    return s;
-  };
-  const double rho = SpectralRadius(dx);
-  action::FieldValues<double> v;  // the accepted window's fields
-  auto keep = [&](const action::FieldSystem<Density>& sys, int first,
-                  double t_start) {
-    if (!options.keep_field) return;
-    for (int i = first; i < sys.time_points(); ++i) {
-      s.t.push_back(t_start + s.dt * i);
-      const auto b = v.phi.begin() + sys.At(i, 0, 0);
-      s.phi.insert(s.phi.end(), b, b + n);
-      const auto c = v.phi_t.begin() + sys.At(i, 0, 0);
-      s.phi_t.insert(s.phi_t.end(), c, c + n);
-    }
-  };
-  auto since = [](Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-  };
-  for (std::size_t w = 0; w < sizes.size(); ++w) {
-    const long long pts = sizes[w];
-    const double t1 = t0 + s.dt * double(pts - 1);
-    auto lap = Clock::now();
-    // The system first: its boundary data are checked before anything else.
-    sbp::RegularizedOperator<double> dt(
-        sbp::MakeOperator<double>(grid.op, pts, t0, t1));
-    action::FieldSystem<Density> sys(density, dt, dx, phi, pi);
-    detail::SetBoundaryData(sys, options.boundary, t0, s.dt);
-    s.seconds_setup += since(lap);
-    lap = Clock::now();
-    if (options.check_resolution) {
-      const double od = s.dt * FastestFieldFrequency(density, dx, rho, phi, pi);
-      s.omega_dt = std::max(s.omega_dt, od);
-      if (od > s.limit) {
-        const long long need = static_cast<long long>(std::ceil(
-                                   grid.t_end * (od / s.dt) / s.limit)) +
-                               1;
-        std::ostringstream msg;
-        msg << "under-resolved: Δt·ω_max = " << od << " at t = " << t0
-            << " exceeds the " << grid.op << " limit " << s.limit
-            << " (ω_max = " << od / s.dt << " from the spatial grid and the "
-            << "potential); use at least " << need << " time points";
-        return finish(false, msg.str());
-      }
-    }
-    s.seconds_check += since(lap);
-    lap = Clock::now();
-    if (pts != cached_size) {
-      // The sparse LU's pattern is that of one window length (the modes
-      // solver rebuilds its own per length).
-      lu_retired += sparse.factorizations;
-      sparse = SparseLuSolver(options.sparse);
-      cached_size = pts;
-    }
-    // Start from φ₀ + (t − t0)·π₀.
-    std::vector<double> y(sys.size(), 0.0);
-    for (int j = 0; j < s.nx; ++j)
-      for (int i = 0; i < pts; ++i)
-        for (int a = 0; a < m; ++a)
-          y[sys.Phi(i, j, a)] = phi[j * m + a] + s.dt * i * pi[j * m + a];
-    s.seconds_setup += since(lap);
-    const auto r =
-        options.linear == WindowLinearSolver::kModes
-            ? variational::Newton<double>(sys, y, options.newton, modes)
-            : variational::Newton<double>(sys, y, options.newton, sparse);
-    ++s.windows;
-    s.factorizations += r.iterations;
-    s.corrections += r.corrections;
-    s.residual_norm = std::max(s.residual_norm, r.residual_norm);
-    s.seconds_assembly += r.seconds.assembly;
-    s.seconds_factor += r.seconds.factorization;
-    s.seconds_solve += r.seconds.solve;
-    s.seconds_residual += r.seconds.residual;
-    if (!r.converged) {
-      std::ostringstream msg;
-      msg << "Newton did not converge in the window [" << t0 << ", " << t1
-          << "]: " << r.reason;
-      return finish(false, msg.str());
-    }
-    lap = Clock::now();
-    sys.Fields(y.data(), v);
-    keep(sys, w == 0 ? 0 : 1, t0);
-    s.end = CorrectFieldEnd(sys, y.data(), v);
-    if (w + 1 == sizes.size()) {
-      const auto b = v.phi.begin() + sys.At(int(pts) - 1, 0, 0);
-      s.end_phi_node.assign(b, b + n);
-    }
-    phi = s.end.phi;
-    pi = s.end.phi_t;
-    s.seconds_handoff += since(lap);
-    t0 = t1;
-    if (options.on_window) options.on_window(int(w) + 1, int(sizes.size()), t1);
+
+  // The boundary data first, on the first window's nodes (what they are
+  // checked against is the system's: field_boundary.h).
+  if (!adaptive) {
+    const long long w =
+        grid.window_points > 0 && grid.window_points < grid.points
+            ? grid.window_points
+            : grid.points;
+    const sbp::RegularizedOperator<double> first(
+        sbp::MakeOperator<double>(grid.op, w, 0.0, s.dt * double(w - 1)));
+    action::FieldSystem<Density> sys(density, first, dx, phi0, pi0);
+    detail::SetBoundaryData(sys, options.boundary, 0.0, s.dt);
   }
-  return finish(true, "converged");
+  // Then the initial state: a grid too coarse for it is refused with the
+  // number of points it needs, before any work.
+  if (options.check_resolution && !adaptive) {
+    const double omega =
+        FastestFieldFrequency(density, dx, SpectralRadius(dx), phi0, pi0);
+    s.omega_dt = s.dt * omega;
+    s.message = UnderResolved(grid.op, s.limit, s.dt, omega, 0.0, grid.t_end);
+    if (!s.message.empty()) {
+      s.seconds_total =
+          std::chrono::duration<double>(Clock::now() - start).count();
+      return s;
+    }
+  }
+
+  const FieldWindowOptions wo{options.newton,           options.linear,
+                              options.sparse,           options.boundary,
+                              options.check_resolution, grid.t_end};
+  FieldWindow<Density> window(density, dx, grid.op, wo, phi0, pi0);
+  s.unchecked = window.unchecked();
+  variational::MarchOptions mo;
+  const long long all = adaptive ? 0 : grid.points;
+  mo.window_points =
+      grid.window_points > 0 && (adaptive || grid.window_points < all)
+          ? grid.window_points
+      : adaptive ? 16
+                 : all;
+  if (mo.window_points < table.min_points)
+    throw std::invalid_argument("a window of " +
+                                std::to_string(mo.window_points) +
+                                " points is below the minimum of " + grid.op +
+                                " (" + std::to_string(table.min_points) + ")");
+  mo.keep_trajectory = false;
+  // A field refuses an under-resolved grid (above) rather than refining it.
+  mo.stabilize = false;
+  mo.tolerance = options.tolerance;
+  mo.initial_step = options.initial_step;
+  mo.max_points = options.max_points;
+  mo.solve.newton = options.newton;
+  const int total = adaptive
+                        ? 0
+                        : int((grid.points - 1 + mo.window_points - 2) /
+                              std::max<long long>(mo.window_points - 1, 1));
+  int done = 0;
+  mo.window_observer = [&](const variational::WindowSample& w) {
+    ++done;
+    // The window's nodes but its last are kept; its last is the next one
+    // to come (or, for the march's last window, the last kept).
+    if (options.keep_field) s.window_ends.push_back(s.t.size());
+    if (options.on_window)
+      options.on_window(done, std::max(total, done), w.t_end);
+  };
+  const variational::NodeObserver keep = [&](double t, const double* x,
+                                             const double* v) {
+    if (!options.keep_field) return;
+    s.t.push_back(t);
+    s.phi.insert(s.phi.end(), x, x + n);
+    s.phi_t.insert(s.phi_t.end(), v, v + n);
+  };
+  const variational::Grid g{.op = grid.op,
+                            .points = adaptive ? table.min_points : grid.points,
+                            .t_start = 0.0,
+                            .t_end = grid.t_end};
+  variational::MarchResult out;
+  variational::InitialData state{std::move(phi0), std::move(pi0)};
+  bool ok;
+  if (adaptive) {
+    variational::detail::AdaptiveMarch<FieldWindow<Density>> march(
+        window, g, mo, keep, out, table.min_points);
+    ok = march.Run(state);
+  } else {
+    variational::detail::UniformMarch<FieldWindow<Density>> march(
+        window, g, mo, keep, out, table.min_points);
+    ok = march.Run(state);
+  }
+  for (auto& e : s.window_ends) e = std::min(e, s.t.size() - 1);
+  s.converged = ok;
+  s.message =
+      ok ? std::string(adaptive ? "converged under error control" : "converged")
+         : out.status.reason;
+  s.windows = int(out.window_count);
+  s.factorizations = out.iterations;
+  s.corrections = out.corrections;
+  s.points = out.points;
+  s.march_fallbacks = out.fallbacks;
+  s.rejected = out.rejected;
+  s.check_failures = out.check_failures;
+  s.min_step = out.min_step;
+  s.max_step = out.max_step;
+  s.predictor_steps = out.predictor_steps;
+  s.omega_dt = std::max(s.omega_dt, window.omega_dt());
+  s.mode_factorizations = window.mode_factorizations();
+  s.lu_factorizations = window.lu_factorizations();
+  s.fallbacks = window.fallbacks();
+  s.factor_bytes = window.factor_bytes();
+  s.jacobian_nonzeros = window.jacobian_nonzeros();
+  s.residual_norm = window.residual_norm();
+  if (ok) {
+    s.end.phi = state.x;
+    s.end.phi_t = state.v;
+    s.end_phi_node = window.last_node();
+    s.end.phi_estimate = window.last_estimates().first;
+    s.end.phi_t_estimate = window.last_estimates().second;
+  }
+  const FieldTimings& ft = window.timings();
+  s.seconds_residual = ft.residual;
+  s.seconds_assembly = ft.assembly;
+  s.seconds_factor = ft.factorization;
+  s.seconds_solve = ft.solve;
+  s.seconds_setup = ft.setup;
+  s.seconds_check = ft.check;
+  s.seconds_handoff = ft.handoff;
+  s.seconds_predictor = ft.predictor;
+  s.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  return s;
 }
 
 }  // namespace vivp::fields

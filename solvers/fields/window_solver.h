@@ -156,8 +156,8 @@ class ModesSolver {
     // (Nx Hessians; the iterate's first slice is the initial data), a second
     // one averaged over the whole window at the current iterate.
     system.Fields(y, values_);
-    blocks_ = MeanBlocks(system, values_,
-                         rounds_ == 1 ? 1 : system.time_points());
+    blocks_ =
+        MeanBlocks(system, values_, rounds_ == 1 ? 1 : system.time_points());
     factored_ = false;
   }
   bool Factorize() {

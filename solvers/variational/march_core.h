@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "solvers/variational/march_types.h"
+#include "solvers/variational/resolution.h"
+#include "solvers/variational/step_control.h"
 #include "solvers/variational/window_solve.h"
 
 namespace vivp::variational::detail {

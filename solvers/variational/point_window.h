@@ -45,9 +45,11 @@ class PointWindow {
     return variational::FastestFrequency(problem_, x, v);
   }
 
-  PredictorReport Predict(const double* x0, const double* v0, const double* tau,
-                          int points, double tol_abs, double tol_rel,
-                          double* px, double* pv) {
+  // The Lagrangian does not depend on t: the window's start time t0 does
+  // not matter.
+  PredictorReport Predict(double /*t0*/, const double* x0, const double* v0,
+                          const double* tau, int points, double tol_abs,
+                          double tol_rel, double* px, double* pv) {
     return predictor_.Run(x0, v0, tau, points, tol_abs, tol_rel, px, pv);
   }
 

@@ -77,8 +77,12 @@ struct WindowAttempt {
   State roundoff_v;          // the round-off level of (Dx)_N (window_engine.h)
   CorrectedEnd<double> end;  // hand-off
   std::vector<double> x, v;  // nodes (node-major, points·n), if kept
-  double distance = 0;       // worst |H − P| / allowed of check 2
-  double deviation = 0;      // max over nodes of |x_i − P(t_i)|
+  // Components that are data, not unknowns (a field's Dirichlet points):
+  // checks 2 and 3 skip them. Empty: none.
+  std::vector<char> data;
+  bool IsData(int c) const { return !data.empty() && data[c]; }
+  double distance = 0;   // worst |H − P| / allowed of check 2
+  double deviation = 0;  // max over nodes of |x_i − P(t_i)|
   long predictor_steps = 0;
   bool ok() const { return failure == WindowFailure::kNone; }
   bool split_helps() const {
@@ -133,6 +137,7 @@ inline std::string CheckConsistent(WindowAttempt& a, const PredictorReport& pr,
   double worst = 0;
   std::ostringstream why;
   for (int c = 0; c < d; ++c) {
+    if (a.IsData(c)) continue;
     const double est = sbp21 && order == 2
                            ? std::max(a.est_x[c], length * a.est_v[c])
                            : a.est_x[c];
@@ -171,7 +176,8 @@ inline std::string CheckResolved(const WindowAttempt& a,
   double scale = 0, dev = a.deviation;
   for (double v : px) scale = std::max(scale, std::abs(v));
   for (int c = 0; c < d; ++c)
-    dev = std::max(dev, std::abs(a.end.position[c] - pend_x[c]));
+    if (!a.IsData(c))
+      dev = std::max(dev, std::abs(a.end.position[c] - pend_x[c]));
   if (dev <= rho * scale + pr.error_x) return "";
   std::ostringstream s;
   s << "under-resolved: the window's nodes deviate from an independent "

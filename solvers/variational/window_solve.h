@@ -9,7 +9,8 @@
 //
 //   int dim() const;  int order() const;  const std::string& op() const;
 //   double FastestFrequency(const double* x, const double* v) const;
-//   PredictorReport Predict(x0, v0, tau, points, tol_abs, tol_rel, px, pv);
+//   PredictorReport Predict(t0, x0, v0, tau, points, tol_abs, tol_rel, px,
+//                           pv);
 //   bool Solve(WindowAttempt&, double t0, const InitialData&, px, pv,
 //              bool fresh, bool nodes);
 //   void RecordResidual(WindowAttempt&) const;
@@ -78,7 +79,7 @@ class WindowSolver {
     }
     PredictorReport pr;
     for (int tries = 0;; ++tries) {
-      pr = window_.Predict(x0_.data(), v0_.data(), tau_.data(), points,
+      pr = window_.Predict(t0, x0_.data(), v0_.data(), tau_.data(), points,
                            predictor_tol.absolute, predictor_tol.relative,
                            px_.data(), pv_.data());
       a.predictor_steps += pr.steps;
