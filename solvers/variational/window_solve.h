@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sbp/builder.h"
 #include "solvers/variational/ceres_lm.h"
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/predictor.h"
@@ -94,7 +95,8 @@ class WindowSolver {
     std::string why = CheckFinite(a, order_);
     WindowFailure failure = WindowFailure::kNewton;
     if (why.empty()) {
-      why = CheckConsistent(a, pr, pend_x, pend_v, order_, op_ == "sbp21");
+      why = CheckConsistent(a, pr, pend_x, pend_v, order_,
+                            sbp::Table(op_).measured.position_estimate);
       failure = WindowFailure::kCheck;
     }
     if (why.empty() && uniform) {
