@@ -17,6 +17,9 @@
 # lagrangians/register.h, the user's entry point, which is vivp itself
 # (vivp::Register).
 #
+# solvers/ and core/ spell no option of a front end: no command-line option
+# and no scene key assignment in their string literals (below).
+#
 # Usage: layers_test.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"

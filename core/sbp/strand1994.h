@@ -40,7 +40,7 @@ inline const Coefficients& Sbp21() {
               .stability_limit = 0.70,
               // Not an estimate: its ratio to the true error of x_N is
               // 0.02–19, and the corrected x_N is not more accurate than
-              // x_N; the velocity estimate is (ratio 0.9–1.1).
+              // x_N; the velocity estimate is one (ratio 0.9–1.1).
               .position_estimate = false,
               // Step doubling of a first-order end velocity.
               .estimate_order = 1.0,
