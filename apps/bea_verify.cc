@@ -136,6 +136,9 @@ int RunBeaVerify(BeaOptions o) {
   const bool radial =
       o.dim == 2 && o.matrix.empty() && o.potential == "gaussian";
   const auto r = bea::Derive(method, BeaDeriveOptions(o, radial));
+  // The pendulum is one-dimensional (bea::MakePotential refuses others).
+  if (o.potential == "pendulum" && o.dim != 1)
+    throw UsageError("the pendulum potential needs --dim 1");
   const auto potential = bea::MakePotential(o.potential, o.dim, r.jet->model());
   const bea::ModifiedQuantities q(r, *potential);
   const bea::ConservationSetup s = VerifySetup(o);

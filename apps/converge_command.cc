@@ -104,6 +104,28 @@ variational::SolveOptions ConvergeSolveOptions(const ConvergeOptions& o) {
   return options;
 }
 
+// The settings of a refusal as the command line writes them: `--slab-points
+// 0`, `--solver ceres-lm`.
+class CommandLineSpelling : public variational::SettingSpelling {
+ public:
+  using Setting = variational::Setting;
+  std::string Name(Setting s) const override {
+    switch (s) {
+      case Setting::kSolver:
+        return "--solver";
+      case Setting::kOperator:
+        return "--operator";
+      case Setting::kWindowPoints:
+        return "--slab-points";
+      case Setting::kTolerance:
+        return "--tolerance";
+      case Setting::kExtendedResidual:
+        return "--extended-residual";
+    }
+    return variational::SettingName(s);
+  }
+};
+
 // The options with the window resolved: --slab-points as given, or the
 // solver's default (Ceres LM marches unless --slab-points 0; a tolerance
 // marches in 48 for Newton). An impossible combination is the user's error,
@@ -117,7 +139,8 @@ ConvergeOptions Resolved(const ConvergeOptions& o,
       .tolerance = !o.tolerances.empty(),
       .extended_residual = solve.extended_residual};
   const variational::Refusal refusal = CheckSolveRequest(request);
-  if (!refusal.ok()) throw UsageError(refusal.Sentence());
+  if (!refusal.ok())
+    throw UsageError(Describe(refusal, CommandLineSpelling()).Sentence());
   ConvergeOptions r = o;
   r.slab_points = WindowPoints(request);
   return r;
@@ -269,10 +292,8 @@ Runner AddConvergeCommand(CLI::App& app) {
           studies::FieldProblemNameList() +
           "; its --points default to 17,33,65,129 (docs/field_scenes.md §7)");
   problem->excludes(field);
-  std::vector<std::string> names(sbp::kOperatorNames.begin(),
-                                 sbp::kOperatorNames.end());
   cmd->add_option("--operator", o->op, "SBP operator")
-      ->check(CLI::IsMember(names))
+      ->check(CLI::IsMember(sbp::OperatorNames()))
       ->capture_default_str();
   CLI::Option* points =
       cmd->add_option("--points", o->points, "comma-separated grid sizes Nt")

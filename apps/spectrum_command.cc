@@ -147,18 +147,23 @@ Runner AddSpectrumCommand(CLI::App& app) {
       "spectrum",
       "Spectrum of an SBP operator D and of its regularization D̄ "
       "(zero modes by ranks of D, D^2, ...; paper Figs. 3-4)");
-  std::vector<std::string> names(sbp::kOperatorNames.begin(),
-                                 sbp::kOperatorNames.end());
   cmd->add_option("--operator", o->op, "SBP operator")
-      ->check(CLI::IsMember(names))
+      ->check(CLI::IsMember(sbp::OperatorNames()))
       ->capture_default_str();
+  // "2, 8, 12, 16" and "sbp21 2, sbp42 8, sbp63 12, sbp84 16".
+  std::string minima, named_minima;
+  for (const sbp::Coefficients* c : sbp::Operators()) {
+    const std::string n = std::to_string(c->min_points);
+    minima += (minima.empty() ? "" : ", ") + n;
+    named_minima +=
+        (named_minima.empty() ? "" : ", ") + std::string(c->name) + " " + n;
+  }
   cmd->add_option("--points", o->points,
-                  "number of time points N (at least 2, 8, 12, 16 for "
-                  "sbp21, sbp42, sbp63, sbp84)")
-      ->check(WholeNumberAtLeast(1,
-                                 ">= 1 (time points; the operator's "
-                                 "minimum: sbp21 2, sbp42 8, sbp63 12, "
-                                 "sbp84 16)"))
+                  "number of time points N (at least " + minima + " for " +
+                      sbp::OperatorNameList() + ")")
+      ->check(WholeNumberAtLeast(
+          1,
+          ">= 1 (time points; the operator's minimum: " + named_minima + ")"))
       ->capture_default_str();
   cmd->add_option("--sigma0", o->sigma0,
                   "SAT penalty parameter of D̄ (the paper uses -1)")

@@ -1,7 +1,7 @@
 // The largest window in which Ceres Levenberg–Marquardt keeps the Newton
 // march's accuracy and iteration count, per operator: the measurement behind
-// DefaultWindowPoints (solvers/variational/solver_choice.h) and the table of
-// docs/method.md §8.
+// Measured::lm_window_points (core/sbp; DefaultWindowPoints in
+// solvers/variational/solver_choice.h) and the table of docs/method.md §8.
 //
 // LM minimises |∇S|² through the normal equations JᵀJ, whose condition
 // number is the square of the Jacobian's, so from some window on LM stops
@@ -116,7 +116,8 @@ std::vector<Row> Sweep(bool kepler, long long points,
              : std::vector<double>{kAnharmonic.Exact(10.0).x};
   const double t_end = kepler ? 6 * M_PI : 10.0;
   std::vector<Row> rows;
-  for (const char* op : {"sbp21", "sbp42", "sbp63", "sbp84"}) {
+  for (const std::string& name : sbp::OperatorNames()) {
+    const char* op = name.c_str();
     const Grid grid{.op = op, .points = points, .t_end = t_end};
     for (long long w : {16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512}) {
       if (w < sbp::Table(op).min_points || (kepler && w > 256)) continue;
@@ -151,7 +152,8 @@ int main() {
       "\n# the largest window that keeps both on both, checked on the "
       "anharmonic oscillator at 4097 points\n");
   PrintHeader();
-  for (const char* op : {"sbp21", "sbp42", "sbp63", "sbp84"}) {
+  for (const std::string& name : sbp::OperatorNames()) {
+    const char* op = name.c_str();
     long long best = 0;
     for (const Row& r : kepler)
       if (r.op == op && Keeps(kepler, op, r.window) &&

@@ -15,7 +15,7 @@ int main() {
       " Jet<double,4> up to N = 10^6 (two arrays of 10^7 Jets take 800 MB)\n");
   std::printf("%-7s %10s %12s %12s %14s\n", "op", "N", "double", "D^T u",
               "Jet<double,4>");
-  for (const auto name : vivp::sbp::kOperatorNames) {
+  for (const std::string& name : vivp::sbp::OperatorNames()) {
     for (long n = 1000; n <= 10000000; n *= 10) {
       const auto d = vivp::sbp::MakeOperator<double>(name, n);
       std::vector<double> u(n), du(n);

@@ -90,12 +90,13 @@ void Steps(const std::filesystem::path& dir) {
       vivp::studies::FindProblem("kepler_e09");
   std::string plots;
   int pt = 1;
+  std::vector<std::vector<double>> rows;  // of the last operator, for r
   for (const char* op : {"sbp42", "sbp63", "sbp84"}) {
     MarchOptions o;
     o.tolerance = {1e-6, 1e-6};
     const Grid g{.op = op, .t_end = 2 * M_PI};
     const MarchResult m = p.march(g, o, {});
-    std::vector<std::vector<double>> rows;
+    rows.clear();
     for (const auto& w : m.windows) {
       const auto s = p.exact(0.5 * (w.t_start + w.t_end));
       rows.push_back(
@@ -106,11 +107,10 @@ void Steps(const std::filesystem::path& dir) {
              "' using 1:2 with linespoints lw 2 pt " + std::to_string(pt++) +
              " ps 0.6 title '" + op + ", " + std::to_string(m.points) +
              " nodes'";
-    if (std::string(op) == "sbp84")
-      plots += ", '" + fig.Data("r", rows, "t dt r") +
-               "' using 1:3 axes x1y2 with lines lw 1 lc rgb 'gray' "
-               "title 'r = |x| (right axis)'";
   }
+  plots += ", '" + fig.Data("r", rows, "t dt r") +
+           "' using 1:3 axes x1y2 with lines lw 1 lc rgb 'gray' "
+           "title 'r = |x| (right axis)'";
   fig.script() << "set logscale y\nset format y '10^{%L}'\n"
                << "set xlabel 't'\nset ylabel 'window step {/Symbol D}t'\n"
                << "set y2label 'r'\nset y2tics\nset ytics nomirror\n"

@@ -134,7 +134,7 @@ std::string FieldSchemaHelp() {
        "(neumann) at the ends\n"
        "               space_order = 8    periodic differences: 2, 4, 6, 8\n"
        "               space_operator = \"sbp42\"  on an interval: "
-    << detail::Join({sbp::kOperatorNames.begin(), sbp::kOperatorNames.end()})
+    << detail::Join(sbp::OperatorNames())
     << "\n"
        "  [[term]]     type = \"...\"       one table per density term\n"
        "  [initial]    profile = \"...\"    "

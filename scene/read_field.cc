@@ -16,10 +16,6 @@ namespace {
 constexpr long long kMaxFieldValues = 1LL << 24;
 constexpr long long kMaxSpacePoints = 1LL << 16;
 
-std::vector<std::string> OperatorNames() {
-  return {sbp::kOperatorNames.begin(), sbp::kOperatorNames.end()};
-}
-
 void ReadSpacePoints(const TomlReader& r, const toml::table& t, FieldScene& s) {
   const toml::node& n =
       r.Require(t, "field", "points", "points = Nx, the spatial points");
@@ -119,7 +115,7 @@ void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
            periodic ? "expected space_order = 2, 4, 6 or 8 for periodic "
                       "differences, or boundary = \"natural\""
                     : "expected space_operator = one of " +
-                          Join(OperatorNames()) + " on an interval");
+                          Join(sbp::OperatorNames()) + " on an interval");
   if (const toml::node* n = t.get("space_order")) {
     const long long q = r.Whole(*n, "space_order", 2, "2, 4, 6 or 8");
     if (q > 8 || q % 2)
@@ -128,7 +124,7 @@ void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
     s.space_order = int(q);
   }
   if (const toml::node* n = t.get("space_operator"))
-    s.space_operator = r.Choice(*n, "space_operator", OperatorNames());
+    s.space_operator = r.Choice(*n, "space_operator", sbp::OperatorNames());
   ReadSpacePoints(r, t, s);
 }
 
@@ -172,7 +168,7 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
   const toml::table& t = r.Table(root, "method", false);
   r.CheckKeys(t, "[method]", {"operator", "window_points"});
   if (const toml::node* n = t.get("operator"))
-    s.method.op = r.Choice(*n, "operator", OperatorNames());
+    s.method.op = r.Choice(*n, "operator", sbp::OperatorNames());
   if (const toml::node* n = t.get("window_points")) {
     const long long minimum = sbp::Table(s.method.op).min_points;
     const std::string expected = "0 (one global solve) or at least " +

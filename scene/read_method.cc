@@ -45,6 +45,24 @@ void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
   s.method.tolerance = tol;
 }
 
+// The settings of a refusal as a scene writes them: `slab_points = 0`,
+// `solver = "ceres-lm"`, and "a tolerance" when one is given.
+class SceneSpelling : public variational::SettingSpelling {
+ public:
+  using Setting = variational::Setting;
+  std::string Name(Setting s) const override {
+    return s == Setting::kWindowPoints ? "slab_points"
+                                       : variational::SettingName(s);
+  }
+  std::string With(Setting s, const std::string& value) const override {
+    const bool text = s == Setting::kSolver || s == Setting::kOperator;
+    return Name(s) + " = " + (text ? "\"" + value + "\"" : value);
+  }
+  std::string Given(Setting s) const override {
+    return s == Setting::kTolerance ? "a tolerance" : Name(s);
+  }
+};
+
 // The combination of solver, windows and tolerance, checked where the
 // command line checks it (solver_choice.h), and the window it marches in:
 // slab_points as given, else the solver's default (Ceres LM marches; a
@@ -56,13 +74,14 @@ void ResolveWindow(const TomlReader& r, const toml::table& method, Scene& s) {
       .op = s.method.op,
       .window_points = slab ? s.method.slab_points : -1,
       .tolerance = s.method.tolerance.enabled()};
-  const variational::Refusal refusal =
-      CheckSolveRequest(request, variational::Spelling::kScene);
+  const variational::Refusal refusal = CheckSolveRequest(request);
   // At the window when it is given, else at the solver that has no
   // default window.
   const toml::node* at = slab ? slab : method.get("solver");
-  if (!refusal.ok())
-    r.Fail(at ? *at : *method.get("tolerance"), refusal.what, refusal.expected);
+  if (!refusal.ok()) {
+    const variational::RefusalText text = Describe(refusal, SceneSpelling());
+    r.Fail(at ? *at : *method.get("tolerance"), text.what, text.expected);
+  }
   s.method.slab_points = WindowPoints(request);
 }
 
@@ -86,10 +105,8 @@ void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s) {
              "expected kind = \"variational\"");
     return;
   }
-  std::vector<std::string> ops(sbp::kOperatorNames.begin(),
-                               sbp::kOperatorNames.end());
   if (const toml::node* n = t.get("operator"))
-    s.method.op = r.Choice(*n, "operator", ops);
+    s.method.op = r.Choice(*n, "operator", sbp::OperatorNames());
   if (const toml::node* n = t.get("solver"))
     s.method.solver = r.Choice(*n, "solver", variational::SolverNames());
   if (const toml::node* n = t.get("slab_points"))

@@ -2,6 +2,7 @@
 // `vivp run --help`.
 #include <sstream>
 
+#include "core/sbp/builder.h"
 #include "scene/scene.h"
 #include "scene/text.h"
 #include "solvers/steppers/methods.h"
@@ -9,6 +10,9 @@
 namespace vivp::scene {
 
 std::string SchemaHelp() {
+  std::string operators;  // "sbp21 | sbp42 | sbp63 | sbp84"
+  for (const auto& n : sbp::OperatorNames())
+    operators += (operators.empty() ? "" : " | ") + n;
   std::ostringstream h;
   h << "Scene file (TOML):\n"
        "  title = \"...\"                 optional\n"
@@ -25,8 +29,9 @@ std::string SchemaHelp() {
        "  [method]     kind = \"variational\" | "
     << detail::Join(steppers::MethodNames())
     << "\n"
-       "               operator = \"sbp42\"  sbp21 | sbp42 | sbp63 | sbp84 "
-       "(variational)\n"
+       "               operator = \"sbp42\"  "
+    << operators
+    << " (variational)\n"
        "               solver = \"newton\"   newton | full-newton | ceres-lm "
        "(variational)\n"
        "               slab_points = 0    march in windows of this many "

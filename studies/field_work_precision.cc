@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/sbp/builder.h"
 #include "core/sbp/space.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
@@ -179,8 +180,11 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
     std::string op;
     long long window;
   };
-  const std::vector<Variational> variational{
-      {"sbp21", 8}, {"sbp42", 8}, {"sbp63", 12}, {"sbp84", 16}};
+  // Every time operator, in windows of its minimum but at least 8 points.
+  std::vector<Variational> variational;
+  for (const sbp::Coefficients* c : sbp::Operators())
+    variational.push_back(
+        {std::string(c->name), std::max<long long>(8, c->min_points)});
   auto var = [&](const Problem& p, const Variational& v, long long steps) {
     fields::FieldGrid g{.op = v.op,
                         .points = steps + 1,

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/sbp/builder.h"
 #include "problems/damped_oscillator.h"
 #include "studies/bench_problems.h"
 #include "studies/registry.h"
@@ -161,9 +162,9 @@ BenchProblem DampedBenchProblem() {
   b.reference = "exact";
   b.t_end = 204.8;
   b.first_steps = 256;
-  for (const char* op : {"sbp21", "sbp42", "sbp63", "sbp84"})
+  for (const std::string& op : sbp::OperatorNames())
     for (const char* kind : {"", "_uniform"})
-      b.methods.push_back(std::string("variational_") + op + kind);
+      b.methods.push_back("variational_" + op + kind);
   b.measure = [t_end = b.t_end](const std::string& method, double knob,
                                 int repeats) {
     return MeasureDamped(method, t_end, knob, repeats);
@@ -173,7 +174,7 @@ BenchProblem DampedBenchProblem() {
 
 void RegisterVariationalMethods() {
   static const bool registered = [] {
-    for (const std::string op : {"sbp21", "sbp42", "sbp63", "sbp84"})
+    for (const std::string& op : sbp::OperatorNames())
       for (const std::string kind : {"", "_uniform"}) {
         const std::string name = "variational_" + op + kind;
         RegisterExternalMethod(

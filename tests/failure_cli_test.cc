@@ -2,7 +2,8 @@
 // a trustworthy result ends with exit status 1 and one line on stderr that
 // names what went wrong, where (the time) and the residual left; a scene
 // still writes its summary with the failure; a plot that cannot be drawn is
-// a warning, not an exit.
+// a warning, not an exit. A request that cannot run at all is refused before
+// any work, with exit status 2 and one sentence.
 #define BOOST_TEST_MODULE failure_cli
 #include <unistd.h>
 
@@ -202,4 +203,33 @@ BOOST_AUTO_TEST_CASE(PlotThatCannotBeDrawn_IsAWarning) {
   const auto j = Summary(out);
   BOOST_TEST(j["status"]["converged"].get<bool>());
   BOOST_TEST(j["warnings"].size() == 3u);
+}
+
+BOOST_AUTO_TEST_CASE(ImpossibleCombinations_OneSentenceInTheCommandLineWords) {
+  // Not a failure of a run but of the request: refused before any work with
+  // exit status 2 and one sentence, the solver layer's refusal
+  // (solver_choice.h) in the command line's words.
+  auto refusal = [](const std::string& args) {
+    const Run r = Vivp("converge --problem anharmonic " + args);
+    BOOST_TEST(r.status == 2, args);
+    BOOST_TEST(r.out.empty(), r.out);
+    return r.err;
+  };
+  BOOST_TEST(refusal("--slab-points 4") ==
+             "vivp: error: --slab-points 4 is below the minimum of sbp42 (8); "
+             "expected --slab-points >= 8, or 0 for one global solve\n");
+  BOOST_TEST(refusal("--tolerance 1e-6 --slab-points 0") ==
+             "vivp: error: --tolerance marches in windows, but --slab-points "
+             "0 asks for one global solve; expected --slab-points >= 8 or no "
+             "--slab-points (48)\n");
+  BOOST_TEST(refusal("--solver ceres-lm --extended-residual") ==
+             "vivp: error: --extended-residual evaluates reduced Newton's "
+             "residual in long double, which --solver ceres-lm does not use; "
+             "expected --solver newton, or no --extended-residual\n");
+  BOOST_TEST(refusal("--solver ceres-lm --operator sbp84 --tolerance 1e-6") ==
+             "vivp: error: --solver ceres-lm has no default window for "
+             "--operator sbp84: Levenberg-Marquardt loses Newton's accuracy "
+             "in every window measured (its normal equations square a "
+             "condition number near 1e9); expected --slab-points to march "
+             "anyway (0: one global solve), or --solver newton\n");
 }

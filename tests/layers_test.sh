@@ -17,6 +17,9 @@
 # lagrangians/register.h, the user's entry point, which is vivp itself
 # (vivp::Register).
 #
+# solvers/ and core/ spell no option of a front end: no command-line option
+# and no scene key assignment in their string literals (below).
+#
 # Usage: layers_test.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
@@ -85,5 +88,55 @@ for layer in core problems solvers studies scene report apps figures bench \
              sed -E 's/^([0-9]+):namespace ([a-z_:]+) \{.*/\1:\2/')
   done < <(find "$layer" -name '*.h' -o -name '*.cc' -o -name '*.in')
 done
+
+# solvers/ and core/ name no front end's option: a refusal there is data in
+# the library's own names (solvers/variational/solver_choice.h, Refusal), and
+# apps/ (the command line) and scene/ (scene files) word it. So no string
+# literal under solvers/ or core/ holds a command-line option (`--` and a
+# letter: "--slab-points") or a scene key assignment: a key that the scene
+# reader accepts followed by " = " ("slab_points = 0"), or a literal that
+# starts with " = " for a key to be joined to. The keys are those of the
+# reader's CheckKeys lists in scene/, less the ones of one to three letters
+# (x, v, end, dof), which are the mathematics' names too ("at x = 0.5").
+scene_keys=$(perl -0777 -ne '
+  while (/CheckKeys\((.*?)\);/sg) {
+    my $args = $1;
+    while ($args =~ /\{([^{}]*)\}/g) {
+      my $list = $1;
+      print "$1\n" while $list =~ /"([a-z_]+)"/g;
+    }
+  }' scene/*.cc | awk 'length($0) > 3' | sort -u | paste -sd'|' -)
+if [[ $scene_keys != *slab_points* ]]; then
+  echo "the scene keys were not found in scene/*.cc (CheckKeys lists)"
+  status=1
+fi
+# FILE:LINE: "literal" for each string literal that matches $PATTERN
+# (comments and character literals are skipped).
+hits=$(find solvers core \( -name '*.h' -o -name '*.cc' -o -name '*.in' \) |
+       sort |
+       PATTERN="--[A-Za-z]|(^|[^A-Za-z0-9_])($scene_keys) = |^ = " \
+       xargs perl -ne '
+  my $comment = $in_comment;
+  pos($_) = 0;
+  while (pos($_) < length($_)) {
+    if ($comment) { /\G.*?\*\//gc ? ($comment = 0) : last; next }
+    last if /\G\/\//gc;
+    if (/\G\/\*/gc) { $comment = 1; next }
+    if (/\G"((?:[^"\\]|\\.)*)"/gc) {
+      my $s = $1;
+      print "$ARGV:$.: \"$s\"\n" if $s =~ /$ENV{PATTERN}/;
+      next;
+    }
+    next if /\G\x27(?:[^\x27\\]|\\.)*\x27/gc;
+    /\G./gcs;
+  }
+  $in_comment = $comment;
+  if (eof) { close ARGV; $in_comment = 0 }')
+if [[ -n $hits ]]; then
+  echo "solvers/ or core/ spell a command-line option or a scene key (return"
+  echo "the refusal as data and let apps/ or scene/ word it):"
+  echo "$hits"
+  status=1
+fi
 
 exit $status

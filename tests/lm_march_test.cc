@@ -92,28 +92,63 @@ BOOST_AUTO_TEST_CASE(Windows_LmMarchesByDefaultNewtonSolvesGlobally) {
   BOOST_TEST(WindowPoints({.path = Path::kCeresLm, .window_points = 32}) == 32);
 }
 
-BOOST_AUTO_TEST_CASE(ImpossibleCombinations_OneSentenceInTheCommandLineWords) {
-  auto cli = [](SolveRequest r) { return CheckSolveRequest(r).Sentence(); };
+BOOST_AUTO_TEST_CASE(ImpossibleCombinations_RefusedAsDataInTheApiWords) {
+  // The solver layer says which setting is wrong, its value, the valid
+  // windows and the alternative, in the library's names; the command line's
+  // words are checked in failure_cli_test, the scene's below.
+  using R = Refusal::Reason;
+  auto api = [](SolveRequest r) {
+    return Describe(CheckSolveRequest(r)).Sentence();
+  };
   BOOST_TEST(
       CheckSolveRequest({.path = Path::kCeresLm, .window_points = 48}).ok());
-  BOOST_TEST(cli({.window_points = 4}) ==
-             "--slab-points 4 is below the minimum of sbp42 (8); expected "
-             "--slab-points >= 8, or 0 for one global solve");
-  BOOST_TEST(cli({.window_points = 0, .tolerance = true}) ==
-             "--tolerance marches in windows, but --slab-points 0 asks for "
-             "one global solve; expected --slab-points >= 8 or no "
-             "--slab-points (48)");
-  BOOST_TEST(cli({.path = Path::kCeresLm, .extended_residual = true}) ==
-             "--extended-residual evaluates reduced Newton's residual in long "
-             "double, which --solver ceres-lm does not use; expected --solver "
-             "newton, or no --extended-residual");
-  BOOST_TEST(cli({.path = Path::kCeresLm, .op = "sbp84"})
-                 .find("--solver ceres-lm has no default window for "
-                       "--operator sbp84") == 0u);
+  const Refusal below = CheckSolveRequest({.window_points = 4});
+  BOOST_TEST((below.reason == R::kWindowBelowMinimum));
+  BOOST_TEST((below.setting == Setting::kWindowPoints));
+  BOOST_TEST(below.value == "4");
+  BOOST_TEST(below.op == "sbp42");
+  BOOST_TEST(below.minimum == 8);
+  BOOST_TEST(api({.window_points = 4}) ==
+             "window_points 4 is below the minimum of sbp42 (8); expected "
+             "window_points >= 8, or 0 for one global solve");
+  const Refusal global =
+      CheckSolveRequest({.window_points = 0, .tolerance = true});
+  BOOST_TEST((global.reason == R::kToleranceWithoutWindows));
+  BOOST_TEST((global.setting == Setting::kWindowPoints));
+  BOOST_TEST(global.value == "0");
+  BOOST_TEST(global.fallback == 48);
+  BOOST_TEST(api({.window_points = 0, .tolerance = true}) ==
+             "tolerance marches in windows, but window_points 0 asks for "
+             "one global solve; expected window_points >= 8 or no "
+             "window_points (48)");
+  const Refusal residual =
+      CheckSolveRequest({.path = Path::kCeresLm, .extended_residual = true});
+  BOOST_TEST((residual.reason == R::kResidualUnused));
+  BOOST_TEST((residual.setting == Setting::kExtendedResidual));
+  BOOST_TEST(residual.solver == "ceres-lm");
+  BOOST_TEST(residual.instead == "newton");
+  BOOST_TEST(api({.path = Path::kCeresLm, .extended_residual = true}) ==
+             "extended_residual evaluates reduced Newton's residual in long "
+             "double, which solver ceres-lm does not use; expected solver "
+             "newton, or no extended_residual");
+  const Refusal none =
+      CheckSolveRequest({.path = Path::kCeresLm, .op = "sbp84"});
+  BOOST_TEST((none.reason == R::kNoDefaultWindow));
+  BOOST_TEST((none.setting == Setting::kSolver));
+  BOOST_TEST(none.value == "ceres-lm");
+  BOOST_TEST(none.fallback == 0);
+  BOOST_TEST(none.instead == "newton");
+  BOOST_TEST(api({.path = Path::kCeresLm, .op = "sbp84"})
+                 .find("solver ceres-lm has no default window for "
+                       "operator sbp84") == 0u);
   // An explicit window is the user's choice.
   BOOST_TEST(CheckSolveRequest(
                  {.path = Path::kCeresLm, .op = "sbp84", .window_points = 32})
                  .ok());
+  // An operator without a table is an error, not a default.
+  BOOST_CHECK_THROW(CheckSolveRequest({.op = "sbp105"}), std::invalid_argument);
+  BOOST_CHECK_THROW(DefaultWindowPoints(Path::kCeresLm, "sbp105"),
+                    std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_CASE(Scene_SameSentenceAtItsPosition) {

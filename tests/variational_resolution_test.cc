@@ -3,7 +3,10 @@
 #define BOOST_TEST_MODULE variational_resolution
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
+#include <stdexcept>
+#include <string>
 
+#include "core/sbp/builder.h"
 #include "solvers/variational/march.h"
 
 using namespace vivp;
@@ -34,9 +37,10 @@ using resolution_test::MaxAbs;
 using resolution_test::Spring;
 
 BOOST_DATA_TEST_CASE(StabilityLimit_IsWhereTheSolutionStopsBeingBounded,
-                     bdata::make({"sbp21", "sbp42", "sbp63", "sbp84"}), op) {
-  // Proves the table in resolution.h: bounded (max|x| < 1.5 over 400 steps)
-  // at the limit, unbounded 0.1 above it.
+                     bdata::make(vivp::sbp::OperatorNames()), op) {
+  // Proves every registered operator's measured limit (core/sbp,
+  // Measured::stability_limit): bounded (max|x| < 1.5 over 400 steps) at the
+  // limit, unbounded 0.1 above it.
   const double limit = StabilityLimit(op);
   Spring s;
   auto solve = [&](double h_omega) {
@@ -50,6 +54,16 @@ BOOST_DATA_TEST_CASE(StabilityLimit_IsWhereTheSolutionStopsBeingBounded,
   const auto above = solve(limit + 0.1);
   BOOST_TEST(MaxAbs(above) > 1.5, op << " above the limit: " << MaxAbs(above));
   BOOST_TEST(!above.status.converged);
+}
+
+BOOST_AUTO_TEST_CASE(StabilityLimit_OfAnUnknownOperatorIsAnError) {
+  // No default limit: an operator without a table is refused by name.
+  BOOST_CHECK_EXCEPTION(
+      StabilityLimit("sbp105"), std::invalid_argument, [](const auto& e) {
+        return std::string(e.what()) ==
+               "unknown SBP operator 'sbp105'; valid operators: sbp21, "
+               "sbp42, sbp63, sbp84";
+      });
 }
 
 BOOST_AUTO_TEST_CASE(StiffSpring_AtTenTimesTheStepIsReportedNotHidden) {

@@ -7,12 +7,12 @@
 //   "sbp42 needs at least 8 points, got 5"
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/sbp/mattsson_nordstrom2004.h"
 #include "core/sbp/operator.h"
@@ -20,22 +20,41 @@
 
 namespace vivp::sbp {
 
-inline constexpr std::array<std::string_view, 4> kOperatorNames = {
-    "sbp21", "sbp42", "sbp63", "sbp84"};
+// The registered operators, in the order of their accuracy. An operator is
+// its coefficient file (the table with its measured row, coefficients.h)
+// and its row here; everything else looks it up by name through Table().
+inline const std::vector<const Coefficients*>& Operators() {
+  static const std::vector<const Coefficients*> all = {
+      &Sbp21(),
+      &Sbp42(),
+      &Sbp63(),
+      &Sbp84(),
+  };
+  return all;
+}
 
+// "sbp21", "sbp42", ...: the names of Operators(), in their order.
+inline const std::vector<std::string>& OperatorNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const Coefficients* c : Operators()) out.emplace_back(c->name);
+    return out;
+  }();
+  return names;
+}
+
+// "sbp21, sbp42, sbp63, sbp84".
 inline std::string OperatorNameList() {
   std::string out;
-  for (auto n : kOperatorNames)
-    out += (out.empty() ? "" : ", ") + std::string(n);
+  for (const auto& n : OperatorNames()) out += (out.empty() ? "" : ", ") + n;
   return out;
 }
 
-// The coefficient table of an operator by name ("sbp21", ..., "sbp84").
+// The coefficient table of an operator by name ("sbp21", ..., "sbp84"); an
+// unknown name is std::invalid_argument naming the valid ones.
 inline const Coefficients& Table(std::string_view name) {
-  if (name == "sbp21") return Sbp21();
-  if (name == "sbp42") return Sbp42();
-  if (name == "sbp63") return Sbp63();
-  if (name == "sbp84") return Sbp84();
+  for (const Coefficients* c : Operators())
+    if (c->name == name) return *c;
   throw std::invalid_argument("unknown SBP operator '" + std::string(name) +
                               "'; valid operators: " + OperatorNameList());
 }

@@ -1,6 +1,7 @@
 #include "solvers/bea/potentials.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace vivp::bea {
 
@@ -8,7 +9,10 @@ std::unique_ptr<NumericPotential> MakePotential(const std::string& name,
                                                 int dim, PotentialModel model) {
   if (name == "pendulum") {
     if (dim != 1 || model != PotentialModel::kGeneric)
-      throw std::invalid_argument("the pendulum potential needs --dim 1");
+      throw std::invalid_argument(
+          "the pendulum potential is one-dimensional and generic (dim 1, "
+          "PotentialModel::kGeneric); got dim " +
+          std::to_string(dim));
     return std::make_unique<Pendulum>();
   }
   if (name == "gaussian") {

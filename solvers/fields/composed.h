@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sbp/builder.h"
 #include "core/sbp/space.h"
 #include "problems/fields/terms.h"
 #include "solvers/fields/solve.h"
@@ -15,12 +16,10 @@ namespace vivp::fields {
 
 // The most values (time points × spatial points × components) that a scene
 // or a study solves at once, in one global solve or one window; beyond it,
-// march in windows. SBP21 has no fill (512 × 512 in 710 MB, docs/fields.md
-// §8). The others fill: a global Klein–Gordon solve took 0.35 GB and 3.3 s
-// at 257 × 128 with SBP42, 1.1 GB at 257 × 256, and 2.1 GB and 55 s at
-// 257 × 256 with SBP84 (peak memory, `vivp converge --field klein_gordon`).
+// march in windows. Measured per time operator (core/sbp,
+// Measured::field_values_at_once).
 inline long long MaxSolvedAtOnce(const std::string& op) {
-  return op == "sbp21" ? 1LL << 18 : 1LL << 15;
+  return sbp::Table(op).measured.field_values_at_once;
 }
 
 #define VIVP_FIELD_SOLVE(M)                                           \

@@ -74,8 +74,8 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
     throw std::invalid_argument(
         "window of " + std::to_string(options.window_points) +
         " points is below the minimum of " + grid.op + " (" +
-        std::to_string(min_points) + "); use --slab-points >= " +
-        std::to_string(min_points) + " or 0 for one global solve");
+        std::to_string(min_points) + "); use window_points >= " +
+        std::to_string(min_points) + ", or one global solve");
   MarchResult out;
   InitialData state = initial;
   const int order = detail::CheckInitialData(problem, state);

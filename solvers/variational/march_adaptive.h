@@ -7,6 +7,7 @@
 // kept). See docs/error_control.md.
 #pragma once
 
+#include "core/sbp/builder.h"
 #include "solvers/variational/march_core.h"
 
 namespace vivp::variational::detail {
@@ -20,7 +21,8 @@ class AdaptiveMarch : public MarchCore<WindowT> {
 
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
-    const bool doubling = grid_.op == "sbp21";
+    // Step doubling where the position estimate is not one (SBP21).
+    const bool doubling = !sbp::Table(grid_.op).measured.position_estimate;
     StepController control(EstimateOrder(grid_.op));
     double t = grid_.t_start;
     double dt = InitialStep(state);

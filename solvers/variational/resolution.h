@@ -2,14 +2,13 @@
 //
 // The variational SBP discretization is not unconditionally stable: for the
 // harmonic oscillator ẍ = −ω²x its discrete critical point grows without
-// bound once Δt·ω exceeds a limit that depends on the operator. Measured
-// (global solve over 400 steps, max|x| < 1.5 as "bounded"; reproduce with
-// tests/variational_resolution_test):
-//   SBP21 0.70, SBP42 1.00, SBP63 0.95, SBP84 0.90.
-// A Newton solve that converges to such a critical point has solved the
-// discrete equations but not the problem, so SolveIvp reports it as not
-// converged. ω is estimated from the Lagrangian: ω² = the largest eigenvalue
-// of M⁻¹K with M = ∂²L/∂v², K = −∂²L/∂x², at the initial and final states.
+// bound once Δt·ω exceeds a limit that depends on the operator, measured
+// per operator (core/sbp, Measured::stability_limit; reproduce with
+// tests/variational_resolution_test). A Newton solve that converges to such a
+// critical point has solved the discrete equations but not the problem, so
+// SolveIvp reports it as not converged. ω is estimated from the Lagrangian: ω²
+// = the largest eigenvalue of M⁻¹K with M = ∂²L/∂v², K = −∂²L/∂x², at the
+// initial and final states.
 #pragma once
 
 #include <cmath>
@@ -17,15 +16,14 @@
 
 #include "core/action/density.h"
 #include "core/linalg/small_eigen.h"
+#include "core/sbp/builder.h"
 
 namespace vivp::variational {
 
+// The limit of Δt·ω of an operator; an unknown operator is
+// std::invalid_argument naming the valid ones.
 inline double StabilityLimit(std::string_view op) {
-  if (op == "sbp21") return 0.70;
-  if (op == "sbp42") return 1.00;
-  if (op == "sbp63") return 0.95;
-  if (op == "sbp84") return 0.90;
-  return 0.70;
+  return sbp::Table(op).measured.stability_limit;
 }
 
 // The largest ω with ω² an eigenvalue of M⁻¹K at (x, v); 0 when the problem

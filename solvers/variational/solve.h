@@ -18,7 +18,8 @@
 //   auto marched = vivp::variational::Solve(anharmonic, initial, grid, march);
 //
 // Either form checks the combination first (solver_choice.h) and throws
-// std::invalid_argument with the sentence a front end shows. The paths
+// std::invalid_argument with the refusal in the API's words (a front end
+// checks first and words it in its own). The paths
 // themselves: solve_ivp.h (Newton), ceres_lm.h (Levenberg–Marquardt),
 // march.h (windows).
 #pragma once
@@ -37,7 +38,7 @@ namespace detail {
 
 inline void Require(const SolveRequest& request) {
   const Refusal refusal = CheckSolveRequest(request);
-  if (!refusal.ok()) throw std::invalid_argument(refusal.Sentence());
+  if (!refusal.ok()) throw std::invalid_argument(Describe(refusal).Sentence());
 }
 
 }  // namespace detail

@@ -1,11 +1,15 @@
 // Which solver a user asks for, by name, and which combinations of solver,
 // windows and error control can run: the one place that parses a solver
-// name and the one place that refuses a combination, for the command line
-// (`vivp converge`) and for scenes (`vivp run`) alike, before any work.
+// name and the one place that refuses a combination, for every front end
+// (the command line's `vivp converge`, scenes' `vivp run`, a library
+// caller of Solve) alike, before any work.
 //
-// A refusal is one sentence with the settings spelled as the front end
-// spells them (`--slab-points 0` on the command line, `slab_points = 0` in a
-// scene): "what is wrong; expected what".
+// A refusal is data (Refusal: the setting that is wrong, its value, the
+// valid windows and the alternative), with the settings named as this
+// library's API names them (SolveRequest: solver, operator, window_points,
+// ...). A front end turns it into one sentence, "what is wrong; expected
+// what", with Describe and its own spelling of the settings
+// (SettingSpelling).
 #pragma once
 
 #include <stdexcept>
@@ -43,16 +47,12 @@ inline Path ParseSolver(const std::string& name) {
 // The window a march takes when none is given. Newton: 48 points, the
 // throughput optimum measured by bench/march_bench (MarchOptions). Ceres LM
 // marches by default, in the largest window in which it keeps the Newton
-// march's accuracy and iteration count, measured by bench/lm_window_bench
-// (docs/method.md §8): its normal equations square a condition number that
-// grows with the window. 0: no window keeps them (SBP84, whose condition
-// number is ~1e9 in every window).
+// march's accuracy and iteration count, measured per operator (core/sbp,
+// Measured::lm_window_points); 0: no window keeps them. An unknown operator
+// is std::invalid_argument naming the valid ones.
 inline long long DefaultWindowPoints(Path path, const std::string& op) {
   if (path != Path::kCeresLm) return 48;
-  if (op == "sbp21") return 192;
-  if (op == "sbp42") return 128;
-  if (op == "sbp63") return 16;
-  return 0;
+  return sbp::Table(op).measured.lm_window_points;
 }
 
 // What a front end asks of the solver.
@@ -76,63 +76,155 @@ inline long long WindowPoints(const SolveRequest& r) {
   return 0;
 }
 
-enum class Spelling { kCommandLine, kScene };
+// The settings of a SolveRequest, named as this library's API names them
+// (SettingName); a front end spells them as its own options.
+enum class Setting {
+  kSolver,
+  kOperator,
+  kWindowPoints,
+  kTolerance,
+  kExtendedResidual
+};
 
-// Why a request cannot run: `what` is wrong; `expected` starts "expected".
+// "solver", "operator", "window_points", "tolerance", "extended_residual".
+inline std::string SettingName(Setting s) {
+  switch (s) {
+    case Setting::kSolver:
+      return "solver";
+    case Setting::kOperator:
+      return "operator";
+    case Setting::kWindowPoints:
+      return "window_points";
+    case Setting::kTolerance:
+      return "tolerance";
+    case Setting::kExtendedResidual:
+      return "extended_residual";
+  }
+  return "?";
+}
+
+// Why a request cannot run, as data for a front end to word.
 struct Refusal {
+  enum class Reason {
+    kNone,
+    // window_points is between 0 and the operator's minimum.
+    kWindowBelowMinimum,
+    // No window is given, and the solver, which marches (Ceres LM, or any
+    // solver under a tolerance), has none measured for the operator.
+    kNoDefaultWindow,
+    // A tolerance, which marches in windows, with window_points = 0.
+    kToleranceWithoutWindows,
+    // extended_residual with a solver that does not use it.
+    kResidualUnused,
+  };
+  Reason reason = Reason::kNone;
+  Setting setting = Setting::kWindowPoints;  // the setting that is wrong
+  std::string value;                         // and its value as given
+  std::string solver;                        // the solver asked for
+  std::string op;                            // the operator asked for
+  // The valid windows: 0 (one global solve) or at least `minimum` points;
+  // none given is the solver's default, `fallback` points (0: none).
+  long long minimum = 0;
+  long long fallback = 0;
+  // The solver that would run instead ("": none suggested).
+  std::string instead;
+
+  bool ok() const { return reason == Reason::kNone; }
+};
+
+// How a front end writes a setting: its name alone (the library's
+// "window_points"), with a value ("window_points 0"), and as the subject
+// of a sentence when it is given.
+class SettingSpelling {
+ public:
+  virtual ~SettingSpelling() = default;
+  virtual std::string Name(Setting s) const { return SettingName(s); }
+  virtual std::string With(Setting s, const std::string& value) const {
+    return Name(s) + " " + value;
+  }
+  virtual std::string Given(Setting s) const { return Name(s); }
+};
+
+// A refusal in words: `what` is wrong; `expected` starts "expected".
+struct RefusalText {
   std::string what, expected;
-  bool ok() const { return what.empty(); }
   std::string Sentence() const { return what + "; " + expected; }
 };
 
-// The refusal of an impossible combination, or an empty one.
-inline Refusal CheckSolveRequest(const SolveRequest& r,
-                                 Spelling spelling = Spelling::kCommandLine) {
-  const bool cli = spelling == Spelling::kCommandLine;
-  // A setting as the front end writes it: `--slab-points 0`, `slab_points =
-  // 0`, `solver = "ceres-lm"`.
-  auto setting = [&](const char* flag, const char* key,
-                     const std::string& value, bool text = false) {
-    if (cli) return std::string(flag) + " " + value;
-    return std::string(key) + " = " + (text ? "\"" + value + "\"" : value);
-  };
-  const std::string slab = cli ? "--slab-points" : "slab_points";
-  const std::string solver =
-      setting("--solver", "solver", PathName(r.path), true);
-  const long long minimum = sbp::Table(r.op).min_points;
-  const std::string at_least = slab + " >= " + std::to_string(minimum);
-  if (r.window_points > 0 && r.window_points < minimum)
-    return {setting("--slab-points", "slab_points",
-                    std::to_string(r.window_points)) +
-                " is below the minimum of " + r.op + " (" +
-                std::to_string(minimum) + ")",
-            "expected " + at_least + ", or 0 for one global solve"};
-  const long long fallback = DefaultWindowPoints(r.path, r.op);
-  if (r.window_points < 0 && fallback == 0 &&
-      (r.tolerance || r.path == Path::kCeresLm))
-    return {solver + " has no default window for " +
-                setting("--operator", "operator", r.op, true) +
-                ": Levenberg-Marquardt loses Newton's accuracy in every "
-                "window measured (its normal equations square a condition "
-                "number near 1e9)",
-            "expected " + slab + " to march anyway (0: one global solve), " +
-                "or " + setting("--solver", "solver", "newton", true)};
-  if (r.tolerance && r.window_points == 0)
-    return {std::string(cli ? "--tolerance" : "a tolerance") +
-                " marches in windows, but " +
-                setting("--slab-points", "slab_points", "0") +
-                " asks for one global solve",
-            "expected " + at_least +
-                (fallback > 0
-                     ? " or no " + slab + " (" + std::to_string(fallback) + ")"
-                     : std::string())};
-  if (r.extended_residual && r.path != Path::kReducedNewton)
-    return {
-        "--extended-residual evaluates reduced Newton's residual in long "
-        "double, which " +
-            solver + " does not use",
-        "expected --solver newton, or no --extended-residual"};
+// The refusal in one sentence, its settings spelled by `spelling` (by
+// default as the library's API names them).
+inline RefusalText Describe(const Refusal& r,
+                            const SettingSpelling& spelling = {}) {
+  using R = Refusal::Reason;
+  const std::string window = spelling.Name(Setting::kWindowPoints);
+  const std::string at_least = window + " >= " + std::to_string(r.minimum);
+  switch (r.reason) {
+    case R::kNone:
+      return {};
+    case R::kWindowBelowMinimum:
+      return {spelling.With(Setting::kWindowPoints, r.value) +
+                  " is below the minimum of " + r.op + " (" +
+                  std::to_string(r.minimum) + ")",
+              "expected " + at_least + ", or 0 for one global solve"};
+    case R::kNoDefaultWindow:
+      return {spelling.With(Setting::kSolver, r.solver) +
+                  " has no default window for " +
+                  spelling.With(Setting::kOperator, r.op) +
+                  ": Levenberg-Marquardt loses Newton's accuracy in every "
+                  "window measured (its normal equations square a condition "
+                  "number near 1e9)",
+              "expected " + window + " to march anyway (0: one global " +
+                  "solve), or " + spelling.With(Setting::kSolver, r.instead)};
+    case R::kToleranceWithoutWindows:
+      return {spelling.Given(Setting::kTolerance) +
+                  " marches in windows, but " +
+                  spelling.With(Setting::kWindowPoints, r.value) +
+                  " asks for one global solve",
+              "expected " + at_least +
+                  (r.fallback > 0 ? " or no " + window + " (" +
+                                        std::to_string(r.fallback) + ")"
+                                  : std::string())};
+    case R::kResidualUnused: {
+      const std::string residual = spelling.Name(Setting::kExtendedResidual);
+      return {residual +
+                  " evaluates reduced Newton's residual in long double, "
+                  "which " +
+                  spelling.With(Setting::kSolver, r.solver) + " does not use",
+              "expected " + spelling.With(Setting::kSolver, r.instead) +
+                  ", or no " + residual};
+    }
+  }
   return {};
+}
+
+// The refusal of an impossible combination, or an empty one (ok()).
+inline Refusal CheckSolveRequest(const SolveRequest& r) {
+  using R = Refusal::Reason;
+  Refusal out{.solver = PathName(r.path),
+              .op = r.op,
+              .minimum = sbp::Table(r.op).min_points,
+              .fallback = DefaultWindowPoints(r.path, r.op)};
+  if (r.window_points > 0 && r.window_points < out.minimum) {
+    out.reason = R::kWindowBelowMinimum;
+    out.setting = Setting::kWindowPoints;
+    out.value = std::to_string(r.window_points);
+  } else if (r.window_points < 0 && out.fallback == 0 &&
+             (r.tolerance || r.path == Path::kCeresLm)) {
+    out.reason = R::kNoDefaultWindow;
+    out.setting = Setting::kSolver;
+    out.value = out.solver;
+    out.instead = PathName(Path::kReducedNewton);
+  } else if (r.tolerance && r.window_points == 0) {
+    out.reason = R::kToleranceWithoutWindows;
+    out.setting = Setting::kWindowPoints;
+    out.value = "0";
+  } else if (r.extended_residual && r.path != Path::kReducedNewton) {
+    out.reason = R::kResidualUnused;
+    out.setting = Setting::kExtendedResidual;
+    out.value = "true";
+    out.instead = PathName(Path::kReducedNewton);
+  }
+  return out;
 }
 
 }  // namespace vivp::variational

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "core/sbp/builder.h"
+
 namespace vivp::variational {
 
 // Like an ODE solver's atol/rtol: a value y is accurate enough when its error
@@ -30,17 +32,12 @@ struct Tolerance {
 };
 
 // The order in Δt of the dominant estimate at a fixed number of points per
-// window (a window's length shrinks with Δt), measured as the slope of the
-// estimates over Δt = 0.02 … 0.0006 on the anharmonic oscillator and Kepler
-// e = 0.6 (the velocity estimate, whose closure row is the least accurate:
-// SBP42 2.1–2.7, SBP63 2.4–3.1, SBP84 4.3–4.5; SBP21 step doubling of a
-// first-order velocity, 1). The lower end of each range: a controller that
-// assumes too high an order overshoots and is rejected.
+// window, measured per operator (core/sbp, Measured::estimate_order: the
+// lower end of the measured slope, since a controller that assumes too high
+// an order overshoots and is rejected). An unknown operator is
+// std::invalid_argument naming the valid ones.
 inline double EstimateOrder(std::string_view op) {
-  if (op == "sbp42") return 2.1;
-  if (op == "sbp63") return 2.4;
-  if (op == "sbp84") return 4.3;
-  return 1.0;
+  return sbp::Table(op).measured.estimate_order;
 }
 
 // The standard step-size rule with a proportional-integral term

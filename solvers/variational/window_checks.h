@@ -15,9 +15,10 @@
 //     and |H_v − exact| ≤ 0.26 e_v. A window on another branch of the
 //     discrete equations is off by the size of the solution.
 //     SBP21's position estimate is not one (ratio to the true error of x_N
-//     0.02–19, and the corrected x_N is not more accurate than x_N), so SBP21
-//     bounds the position by the velocity estimate, e_x = L·e_v over the
-//     window's length L (the velocity estimate is reliable: ratio 0.9–1.1);
+//     0.02–19, and the corrected x_N is not more accurate than x_N), so an
+//     operator without one (core/sbp, Measured::position_estimate) bounds
+//     the position by the velocity estimate, e_x = L·e_v over the window's
+//     length L (the velocity estimate is reliable: ratio 0.9–1.1);
 //  3. resolution (uniform grids only, where no tolerance bounds the
 //     estimates): the window's nodes and hand-off may deviate from the
 //     predictor by at most 1 % of the solution's size (a measurement, not an
@@ -119,7 +120,7 @@ inline std::string CheckFinite(const WindowAttempt& a, int order) {
 // ratio of distance to allowance in a.distance.
 inline std::string CheckConsistent(WindowAttempt& a, const PredictorReport& pr,
                                    const double* pend_x, const double* pend_v,
-                                   int order, bool sbp21) {
+                                   int order, bool position_estimate) {
   constexpr double kKappa = 2.0;
   const int d = a.n;
   const double length = a.dt * double(a.points - 1);
@@ -138,7 +139,7 @@ inline std::string CheckConsistent(WindowAttempt& a, const PredictorReport& pr,
   std::ostringstream why;
   for (int c = 0; c < d; ++c) {
     if (a.IsData(c)) continue;
-    const double est = sbp21 && order == 2
+    const double est = !position_estimate && order == 2
                            ? std::max(a.est_x[c], length * a.est_v[c])
                            : a.est_x[c];
     const double dx = std::abs(a.end.position[c] - pend_x[c]);

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sbp/builder.h"
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/predictor.h"
 #include "solvers/variational/window_checks.h"
@@ -98,7 +99,7 @@ class WindowSolver {
     WindowFailure failure = WindowFailure::kNewton;
     if (why.empty()) {
       why = CheckConsistent(a, pr, pend_x, pend_v, order,
-                            window_.op() == "sbp21");
+                            sbp::Table(window_.op()).measured.position_estimate);
       failure = WindowFailure::kCheck;
     }
     if (why.empty() && uniform) {
