@@ -65,9 +65,11 @@ struct Measured {
   // condition number that grows with the window. 0: no window keeps them.
   int lm_window_points;
   // The most values (time points × spatial points × components) that a field
-  // scene or study solves at once, in one global solve or one window; beyond
-  // it, march in windows (solvers/fields/composed.h). Set by the peak memory
-  // of a global Klein–Gordon solve (docs/fields.md §8).
+  // scene or study solves at once by the sparse LU of the whole window (the
+  // reference linear solver), in one global solve or one window; beyond it,
+  // march in windows (solvers/fields/composed.h). Set by the peak memory of
+  // a global Klein–Gordon solve (docs/fields.md §8). The space-diagonalized
+  // solve, which does not fill, has one bound for every operator there.
   long long field_values_at_once;
 };
 

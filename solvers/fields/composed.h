@@ -11,14 +11,24 @@
 #include "core/sbp/space.h"
 #include "problems/fields/terms.h"
 #include "solvers/fields/solve.h"
+#include "solvers/fields/window_solver.h"
 
 namespace vivp::fields {
 
 // The most values (time points × spatial points × components) that a scene
 // or a study solves at once, in one global solve or one window; beyond it,
-// march in windows. Measured per time operator (core/sbp,
-// Measured::field_values_at_once).
-inline long long MaxSolvedAtOnce(const std::string& op) {
+// march in windows. The sparse LU fills (measured per time operator, core/sbp
+// Measured::field_values_at_once); the mode solve does not, and its factors
+// hold 10 (SBP42) to 21 (SBP84) values per unknown on the circle, twice that
+// on an interval (bench/fields_bench, table 1): 2^23 unknowns, 8.4·10⁶
+// (2048 × 4096), keep them under 2.9 GB (docs/fields.md §8).
+inline long long MaxSolvedAtOnce(
+    const std::string& op,
+    WindowLinearSolver linear = WindowLinearSolver::kModes) {
+  if (linear == WindowLinearSolver::kModes) {
+    sbp::Table(op);  // an unknown operator is an error here too
+    return 1LL << 23;
+  }
   return sbp::Table(op).measured.field_values_at_once;
 }
 
