@@ -51,8 +51,12 @@ nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r);
 std::vector<long long> ParsePoints(const std::string& list,
                                    const std::string& flag);
 
+// The tolerances of --tolerance, each in (0, 1); a bad item is a
+// UsageError (converge_tolerance.cc).
+std::vector<double> ParseTolerances(const std::string& list);
+
 // `vivp converge --field NAME`: orders in Δt, or in Δx with a list of
-// --space-points (converge_field.cc).
+// --space-points, or a study over --tolerance (converge_field.cc).
 int RunFieldConverge(const ConvergeOptions& o);
 
 // A line naming what the errors are measured against when the problem has

@@ -1,7 +1,9 @@
 // `vivp converge --field NAME`: the errors of φ at t = T and their fitted
 // orders in Δt over --points, or in Δx over a list of --space-points at one
-// --points (studies/field_problems.h; docs/field_scenes.md §7). The JSON has
-// the shape of the point-mechanics study: rows, orders, orders_true_dt.
+// --points, or the march under error control over a list of --tolerance
+// (studies/field_problems.h; docs/field_scenes.md §7). The JSON has the
+// shape of the point-mechanics study: rows, orders, orders_true_dt (or
+// tracking under error control).
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -23,12 +25,12 @@ namespace {
 studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
                                         const studies::FieldProblem& p) {
   for (const auto& flag : o.flags_given)
-    if (flag == "--tolerance" || flag == "--solver" ||
-        flag == "--extended-residual")
+    if (flag == "--solver" || flag == "--extended-residual")
       throw UsageError(flag +
                        " applies to --problem (point mechanics); a --field "
-                       "study solves with Newton and a sparse LU, on the "
-                       "grids of --points and --space-points");
+                       "study solves with Newton and the space-time window's "
+                       "own linear solver, on the grids of --points and "
+                       "--space-points");
   if (!(o.t_end > 0))
     throw UsageError("--t-end: expected a positive end time, got " +
                      std::to_string(o.t_end));
@@ -42,6 +44,18 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
   so.space_order = o.space_order > 0 ? o.space_order : p.space_order;
   so.t_end = o.t_end;
   so.window_points = o.slab_points;
+  if (!o.tolerances.empty() && so.space_points.size() > 1)
+    throw UsageError(
+        "--tolerance is a study of the march under error control on one "
+        "spatial grid; give one --space-points value");
+  if (!o.tolerances.empty() && so.window_points == 0 && o.slab_points_given)
+    throw UsageError(
+        "--tolerance marches in windows, but --slab-points 0 asks for one "
+        "global solve; expected --slab-points >= " +
+        std::to_string(sbp::Table(so.op).min_points) +
+        " or no --slab-points "
+        "(16)");
+  if (!o.tolerances.empty()) return so;
   if (so.space_points.size() > 1 && so.points.size() > 1)
     throw UsageError(
         "--space-points with a list is a study in Δx at one time grid; give "
@@ -159,11 +173,94 @@ nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
   return j;
 }
 
+// The table of a study over tolerances; returns whether every run converged.
+bool PrintFieldTolerance(std::ostream& human, const studies::FieldProblem& p,
+                         const studies::FieldStudyOptions& so,
+                         const studies::FieldConvergenceStudy& study) {
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  human << p.name << " (" << p.description << "), " << so.op << ", "
+        << dx.name() << " in space, " << dx.points()
+        << " points, t_end = " << so.t_end << ", error control in windows of "
+        << (so.window_points > 0 ? so.window_points : 16)
+        << " points (tolerance = absolute = relative)\n"
+        << Cell("tol", 9) << Cell("points", 9) << Cell("windows", 9)
+        << Cell("rejected", 9) << Cell("err φ") << Cell("err φ_t")
+        << Cell("max err φ", 12) << Cell("max err φ_t", 12)
+        << Cell("seconds", 10) << "\n";
+  bool all = true;
+  for (const auto& r : study.rows) {
+    auto error = [&](double e) { return ErrorCell(r.converged, e); };
+    human << std::scientific << std::setprecision(1) << std::setw(9)
+          << r.tolerance << std::defaultfloat << std::setw(9) << r.points
+          << std::setw(9) << r.windows << std::setw(9) << r.rejected
+          << std::setw(11) << error(r.err_x_corrected) << std::setw(11)
+          << error(r.err_p_corrected) << std::setw(12) << error(r.max_error)
+          << std::setw(12) << error(r.max_error_v) << std::setw(10)
+          << std::setprecision(3) << r.seconds
+          << (r.converged ? "" : "  NOT CONVERGED: " + r.reason) << "\n";
+    all = all && r.converged;
+  }
+  auto track = [](const studies::ToleranceTracking& t) {
+    std::ostringstream s;
+    s << std::setprecision(3) << "slope " << t.slope << ", error/tolerance "
+      << t.min_ratio << " … " << t.max_ratio;
+    return s.str();
+  };
+  human << "end error φ against the tolerance: " << track(study.tracking)
+        << "\nmax error φ over the slices: " << track(study.tracking_max)
+        << "\nmax error φ_t over the slices: " << track(study.tracking_max_v)
+        << "\n";
+  return all;
+}
+
+nlohmann::json FieldToleranceJson(const studies::FieldProblem& p,
+                                  const studies::FieldStudyOptions& so,
+                                  const studies::FieldConvergenceStudy& study) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : study.rows) {
+    nlohmann::json row = ConvergenceRowJson(r);
+    row["space_points"] = r.space_points;
+    row["windows"] = r.windows;
+    rows.push_back(row);
+  }
+  auto track = [](const studies::ToleranceTracking& t) {
+    return nlohmann::json{{"slope", JsonNumber(t.slope)},
+                          {"ratio_min", JsonNumber(t.min_ratio)},
+                          {"ratio_max", JsonNumber(t.max_ratio)}};
+  };
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  return {{"field", p.name},
+          {"description", p.description},
+          {"reference", "exact"},
+          {"operator", so.op},
+          {"space_operator", dx.name()},
+          {"boundary", p.periodic ? "periodic" : "natural"},
+          {"t_end", so.t_end},
+          {"slab_points", so.window_points > 0 ? so.window_points : 16},
+          {"study", "tolerance"},
+          {"rows", rows},
+          {"tracking", track(study.tracking)},
+          {"tracking_max", track(study.tracking_max)},
+          {"tracking_max_v", track(study.tracking_max_v)}};
+}
+
 }  // namespace
 
 int RunFieldConverge(const ConvergeOptions& o) {
   const studies::FieldProblem& p = studies::FindFieldProblem(o.field);
   const studies::FieldStudyOptions so = FieldOptions(o, p);
+  if (!o.tolerances.empty()) {
+    const auto tolerances = ParseTolerances(o.tolerances);
+    const auto study = studies::RunFieldTolerance(p, so, tolerances);
+    std::ostream& human = o.json == "-" ? std::cerr : std::cout;
+    const bool all = PrintFieldTolerance(human, p, so, study);
+    if (!o.json.empty()) WriteJson(o.json, FieldToleranceJson(p, so, study));
+    if (!all) {
+      std::cerr << "vivp: some marches did not converge (see the table)\n";
+      return 1;
+    }
+    return 0;
+  }
   const studies::FieldConvergenceStudy study =
       studies::RunFieldConvergence(p, so);
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;

@@ -10,7 +10,6 @@
 #include "apps/converge_command.h"
 
 namespace vivp::apps {
-namespace {
 
 std::vector<double> ParseTolerances(const std::string& list) {
   return ParseList<double>(
@@ -24,6 +23,8 @@ std::vector<double> ParseTolerances(const std::string& list) {
         return v;
       });
 }
+
+namespace {
 
 nlohmann::json TrackingJson(const studies::ToleranceTracking& t) {
   return {{"slope", JsonNumber(t.slope)},

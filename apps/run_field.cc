@@ -169,11 +169,14 @@ nlohmann::json GridJson(const scene::FieldScene& s,
             {"dx", dx.dx()}}},
           {"time",
            {{"operator", s.method.op},
-            {"points", s.time_points},
+            {"points", sol.points},
             {"t_end", s.t_end},
             {"dt", sol.dt},
+            {"min_step", sol.min_step},
+            {"max_step", sol.max_step},
             {"window_points", s.method.window_points},
-            {"windows", sol.windows}}}};
+            {"windows", sol.windows},
+            {"rejected", sol.rejected}}}};
 }
 
 }  // namespace
@@ -233,10 +236,15 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
         << (s.components == 1 ? " component, " : " components, ") << dx.name()
         << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
         << (s.boundary == "periodic" ? ")" : "]") << Ends(s) << ", "
-        << dx.points() << " points\n  " << s.method.op << ", " << s.time_points
+        << dx.points() << " points\n  " << s.method.op << ", " << sol.points
         << " time points on [0, " << Rounded(s.t_end) << "]";
+  if (s.method.tolerance.enabled())
+    human << " under error control (tolerance " << s.method.tolerance.absolute
+          << " absolute, " << s.method.tolerance.relative << " relative; Δt "
+          << Rounded(sol.min_step) << " … " << Rounded(sol.max_step) << ", "
+          << sol.rejected << " windows rejected)";
   if (sol.windows > 1) human << ", " << sol.windows << " windows";
-  human << ": " << sol.message << ", " << sol.factorizations
+  human << ": " << sol.status.reason << ", " << sol.factorizations
         << " Newton iterations, " << Rounded(sol.seconds_total) << " s\n"
         << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
         << Rounded(sol.limit) << ")\n";
@@ -246,6 +254,12 @@ nlohmann::json SolverJson(const fields::FieldSolution& sol) {
   return {{"windows", sol.windows},
           {"newton_iterations", sol.factorizations},
           {"corrections", sol.corrections},
+          {"linear_solver", sol.linear_solver},
+          {"mode_factorizations", sol.mode_factorizations},
+          {"sparse_lu_fallbacks", sol.fallbacks},
+          {"march_fallbacks", sol.march_fallbacks},
+          {"check_failures", sol.check_failures},
+          {"unchecked", sol.unchecked},
           {"jacobian_nonzeros", sol.jacobian_nonzeros},
           {"residual_norm", sol.residual_norm},
           {"end_phi_estimate", sol.end.phi_estimate},
@@ -259,11 +273,11 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   const auto start = std::chrono::steady_clock::now();
   const scene::FieldRun run = SolveShowingProgress(s, quiet);
   const auto& sol = run.solution;
-  if (!sol.converged) {
+  if (!sol.status.converged) {
     // The grid is the scene's: refused like any other bad value.
-    if (sol.message.rfind("under-resolved", 0) == 0)
-      throw scene::SceneError(s.where_time_points + sol.message);
-    std::cerr << "vivp: the solve did not converge: " << sol.message
+    if (sol.status.reason.rfind("under-resolved", 0) == 0)
+      throw scene::SceneError(s.where_time_points + sol.status.reason);
+    std::cerr << "vivp: the solve did not converge: " << sol.status.reason
               << "; nothing was written\n";
     return 1;
   }
@@ -289,7 +303,8 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   const nlohmann::json summary = {
       {"scene", scene::FieldSceneJson(s)},
       {"kind", "field"},
-      {"status", {{"converged", sol.converged}, {"message", sol.message}}},
+      {"status",
+       {{"converged", sol.status.converged}, {"message", sol.status.reason}}},
       {"grid", GridJson(s, run)},
       {"resolution", {{"omega_dt", sol.omega_dt}, {"limit", sol.limit}}},
       {"solver", SolverJson(sol)},
@@ -327,7 +342,10 @@ int CheckFieldScene(const scene::FieldScene& s) {
             << (s.method.window_points
                     ? ", windows of " + std::to_string(s.method.window_points)
                     : std::string(", one global solve"))
-            << ", " << s.time_points << " points on [0, " << s.t_end << "]\n";
+            << (s.method.tolerance.enabled()
+                    ? std::string(", error control")
+                    : ", " + std::to_string(s.time_points) + " points")
+            << " on [0, " << s.t_end << "]\n";
   return 0;
 }
 

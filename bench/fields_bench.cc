@@ -172,7 +172,7 @@ void Table0() {
         r.seconds_factor, r.seconds_solve, r.seconds_setup, r.seconds_check,
         r.seconds_handoff, r.seconds_total - known, r.seconds_total,
         1e6 * r.seconds_total / (1201.0 * 400), r.factorizations, r.corrections,
-        r.fallbacks, r.converged ? "" : (" " + r.message).c_str());
+        r.fallbacks, r.status.converged ? "" : (" " + r.status.reason).c_str());
   }
   std::printf("\n");
 }
@@ -288,7 +288,8 @@ void Table2() {
                                     phi0, pi0);
         t = std::move(s.t), phi = std::move(s.phi);
         phi_t = std::move(s.phi_t);
-        converged = s.converged, message = s.message, windows = s.windows;
+        converged = s.status.converged, message = s.status.reason,
+        windows = s.windows;
         factorizations = s.factorizations, seconds = s.seconds_total;
       } else {
         auto s = fields::SolveFieldMol(
@@ -296,7 +297,8 @@ void Table2() {
             {.method = c.method, .steps = c.steps, .output_every = 1});
         t = std::move(s.t), phi = std::move(s.phi);
         phi_t = std::move(s.phi_t);
-        converged = s.converged, message = s.message, seconds = s.seconds;
+        converged = s.status.converged, message = s.status.reason,
+        seconds = s.seconds;
       }
       double err50 = 0, err = 0, drift = 0, peak = 0;
       for (std::size_t k = 0; k < t.size(); ++k) {
@@ -343,7 +345,7 @@ void Table3() {
       const auto s = fields::SolveField(
           sg, dx, {"sbp42", nt, 0.02 * (nt - 1), 16}, phi0, pi0, o);
       std::printf("| %d | %d | %.1f |", nt, s.windows, s.seconds_total);
-      if (!s.converged) std::printf(" %s |", s.message.c_str());
+      if (!s.status.converged) std::printf(" %s |", s.status.reason.c_str());
     });
     std::printf(" %.0f |\n", mb);
   }

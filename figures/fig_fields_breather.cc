@@ -65,7 +65,7 @@ Curves Solve(const figures::FieldRun& run) {
   const double e0 = action::ChargesOfSlice(sg, dx, phi0, pi0).energy;
   const auto s =
       fields::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
-  if (!s.converged) throw std::runtime_error(s.message);
+  if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Curves c;
   c.seconds = s.seconds_total;
   c.e0 = e0;

@@ -65,7 +65,7 @@ Result Solve(const figures::FieldRun& run) {
   const auto [phi0, pi0] = fields::InitialData(exact, dx);
   const auto s =
       fields::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
-  if (!s.converged) throw std::runtime_error(s.message);
+  if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Result r;
   r.seconds = s.seconds_total;
   const int nx = run.nx;

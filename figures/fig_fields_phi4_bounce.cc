@@ -135,7 +135,7 @@ Outcome Collide(double v, const Grid& g) {
   const long long nt = std::llround(g.t_end / g.dt) + 1;
   const auto s = fields::SolveField(kPhi4, dx, {"sbp42", nt, g.t_end, g.window},
                                     phi0, pi0);
-  if (!s.converged) throw std::runtime_error(s.message);
+  if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Outcome o;
   o.v = v;
   o.seconds = s.seconds_total;

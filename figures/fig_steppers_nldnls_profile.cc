@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     const auto begin = std::chrono::steady_clock::now();
     const auto report = steppers::Integrate(stepper, y, t_end / steps, steps);
     return Result{
-        report.status == steppers::Status::kOk, y,
+        report.status == steppers::StepOutcome::kOk, y,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
             .count()};
   };

@@ -102,22 +102,28 @@ nlohmann::json FieldSceneJson(const FieldScene& s) {
   if (!s.initial.file.empty()) initial["file"] = s.initial.file;
   if (s.boundary == "periodic" && s.initial.profile != "csv")
     initial["jump"] = s.initial.jump;
-  return {
-      {"source", s.source},
-      {"title", s.title},
-      {"field", field},
-      {"term", terms},
-      {"initial", initial},
-      {"exact", s.exact ? nlohmann::json(true) : nlohmann::json(false)},
-      {"no_exact", s.no_exact},
-      {"time", {{"end", s.t_end}, {"points", s.time_points}}},
-      {"method",
-       {{"operator", s.method.op}, {"window_points", s.method.window_points}}},
-      {"output",
-       {{"diagnostics", s.output.diagnostics},
-        {"stride", s.output.stride},
-        {"format", s.output.format},
-        {"phi_t", s.output.phi_t}}}};
+  return {{"source", s.source},
+          {"title", s.title},
+          {"field", field},
+          {"term", terms},
+          {"initial", initial},
+          {"exact", s.exact ? nlohmann::json(true) : nlohmann::json(false)},
+          {"no_exact", s.no_exact},
+          {"time", {{"end", s.t_end}, {"points", s.time_points}}},
+          {"method",
+           {{"operator", s.method.op},
+            {"window_points", s.method.window_points},
+            {"tolerance",
+             s.method.tolerance.enabled()
+                 ? nlohmann::json{{"absolute", s.method.tolerance.absolute},
+                                  {"relative", s.method.tolerance.relative}}
+                 : nlohmann::json(nullptr)},
+            {"linear_solver", s.method.linear_solver}}},
+          {"output",
+           {{"diagnostics", s.output.diagnostics},
+            {"stride", s.output.stride},
+            {"format", s.output.format},
+            {"phi_t", s.output.phi_t}}}};
 }
 
 std::string FieldSchemaHelp() {

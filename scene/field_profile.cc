@@ -37,7 +37,7 @@ struct TermSet {
   bool Has(const std::string& name) const {
     return std::any_of(
         s.terms.begin(), s.terms.end(),
-        [&](const EffectSpec& e) { return e.type->name == name; });
+        [&](const ListedEffect& e) { return e.type->name == name; });
   }
   // The parameter of a listed term, or `fallback` when the term is absent.
   double Value(const std::string& term, const std::string& key,

@@ -38,6 +38,11 @@ FieldRun Run(const FieldScene& s,
   fields::FieldSolveOptions options;
   options.on_window = on_window;
   options.boundary = s.Boundary();
+  options.tolerance = s.method.tolerance;
+  options.max_points = kMaxFieldValues / (dx.points() * M);
+  options.linear = s.method.linear_solver == "sparse-lu"
+                       ? fields::WindowLinearSolver::kSparseLu
+                       : fields::WindowLinearSolver::kModes;
   const fields::FieldGrid grid{.op = s.method.op,
                                .points = s.time_points,
                                .t_end = s.t_end,
@@ -46,7 +51,7 @@ FieldRun Run(const FieldScene& s,
       fields::SolveField(density, dx, grid, s.phi0, s.phi_t0, options);
   const auto& sol = run.solution;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
-  if (!sol.converged) return run;
+  if (!sol.status.converged) return run;
   run.window_end.assign(sol.t.size(), 0);
   for (std::size_t k : sol.window_ends) run.window_end.at(k) = 1;
   run.columns = s.output.diagnostics;

@@ -32,7 +32,7 @@ struct FieldRun {
 
 // on_window(done, total, t) after each window (see FieldSolveOptions).
 // An under-resolved grid or a failed Newton solve returns
-// solution.converged = false with SolveField's message.
+// solution.status.converged = false with SolveField's reason.
 FieldRun RunFieldScene(
     const FieldScene& scene,
     const std::function<void(int, int, double)>& on_window = {});

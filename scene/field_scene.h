@@ -24,10 +24,13 @@
 //   allow_jump = false                      # periodic: accept a jump
 //   [time]
 //   end = 6.283185307179586
-//   points = 129
+//   points = 129                            # none with a tolerance
 //   [method]
 //   operator = "sbp42"
 //   window_points = 16                      # 0: one global solve
+//   tolerance = 1e-6                        # error control (or
+//                                           # {absolute = …, relative = …})
+//   linear_solver = "modes"                 # modes | sparse-lu
 //   [output]
 //   diagnostics = ["energy", "error"]       # energy, momentum, charge, error
 //   stride = 1                              # every stride-th slice
@@ -71,7 +74,7 @@ struct FieldScene {
   std::array<double, 2> boundary_values = {0, 0};
   int space_order = 8;                   // periodic differences
   std::string space_operator = "sbp42";  // natural: an SBP operator
-  std::vector<EffectSpec> terms;         // type from FieldTermCatalogue()
+  std::vector<ListedEffect> terms;       // type from FieldTermCatalogue()
   struct Initial {
     std::string profile;
     std::map<std::string, double> parameters;  // defaults filled in
@@ -89,7 +92,13 @@ struct FieldScene {
   long long time_points = 0;
   struct Method {
     std::string op = "sbp42";
-    long long window_points = 0;  // 0: one global solve
+    long long window_points = 0;  // 0: one global solve (error control: 16)
+    // Error control: each window's Δt from its estimates ([time] points
+    // is then not given).
+    variational::Tolerance tolerance;
+    // The window's linear solver: "modes" (the space-diagonalized solve)
+    // or "sparse-lu" (the reference).
+    std::string linear_solver = "modes";
   } method;
   struct Output {
     std::vector<std::string> diagnostics;
@@ -113,6 +122,11 @@ struct FieldScene {
   }
   std::vector<fields::FieldTerm> Terms() const;
 };
+
+// Every slice of φ and φ_t is kept for the output: 2^24 values are 256 MB.
+// (Under error control the slices are not known in advance: the march stops
+// when it would keep more, FieldSolveOptions::max_points.)
+inline constexpr long long kMaxFieldValues = 1LL << 24;
 
 // A point-mechanics or a field scene, as the file says.
 using AnyScene = std::variant<Scene, FieldScene>;

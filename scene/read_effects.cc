@@ -150,10 +150,10 @@ std::vector<double> Fallback(const ParameterSpec& p, int dof) {
 
 // A table naming its type among `catalogue` (an [[effect]] or a [[term]],
 // the noun of the messages) and giving that type's parameters.
-EffectSpec ReadTypedTable(const TomlReader& r, const toml::table& t,
-                          const std::vector<EffectType>& catalogue,
-                          const std::string& noun, int dof) {
-  EffectSpec spec;
+ListedEffect ReadTypedTable(const TomlReader& r, const toml::table& t,
+                            const std::vector<EffectType>& catalogue,
+                            const std::string& noun, int dof) {
+  ListedEffect spec;
   spec.line = int(t.source().begin.line);
   spec.column = int(t.source().begin.column);
   std::vector<std::string> names;

@@ -12,8 +12,6 @@ namespace vivp::scene::detail {
 
 namespace {
 
-// Every slice of φ and φ_t is kept for the output: 2^24 values are 256 MB.
-constexpr long long kMaxFieldValues = 1LL << 24;
 constexpr long long kMaxSpacePoints = 1LL << 16;
 
 void ReadSpacePoints(const TomlReader& r, const toml::table& t, FieldScene& s) {
@@ -144,7 +142,7 @@ void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
            "expected [[term]] sections, each with type = \"...\"");
   for (const toml::node& item : *list) {
     const toml::table& t = *item.as_table();
-    const EffectSpec spec =
+    const ListedEffect spec =
         ReadTypedTable(r, t, FieldTermCatalogue(), "term", s.components);
     const std::string& type = spec.type->name;
     for (const auto& e : s.terms)
@@ -157,7 +155,7 @@ void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
     s.terms.push_back(spec);
   }
   if (std::none_of(s.terms.begin(), s.terms.end(),
-                   [](const EffectSpec& e) { return e.type->kinetic; }))
+                   [](const ListedEffect& e) { return e.type->kinetic; }))
     r.Fail(s.terms.front().line, s.terms.front().column,
            "the terms have no kinetic energy, so φ has no time evolution",
            "expected a 'kinetic' term (L += ½|φ_t|²)");
@@ -166,9 +164,15 @@ void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
 void ReadFieldMethod(const TomlReader& r, const toml::table& root,
                      FieldScene& s) {
   const toml::table& t = r.Table(root, "method", false);
-  r.CheckKeys(t, "[method]", {"operator", "window_points"});
+  r.CheckKeys(t, "[method]",
+              {"operator", "window_points", "tolerance", "linear_solver"});
   if (const toml::node* n = t.get("operator"))
     s.method.op = r.Choice(*n, "operator", sbp::OperatorNames());
+  if (const toml::node* n = t.get("tolerance"))
+    s.method.tolerance = ReadTolerance(r, *n);
+  if (const toml::node* n = t.get("linear_solver"))
+    s.method.linear_solver =
+        r.Choice(*n, "linear_solver", {"modes", "sparse-lu"});
   if (const toml::node* n = t.get("window_points")) {
     const long long minimum = sbp::Table(s.method.op).min_points;
     const std::string expected = "0 (one global solve) or at least " +
@@ -180,6 +184,12 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
              "window_points = " + std::to_string(s.method.window_points) +
                  " is below the operator's minimum",
              "expected " + expected);
+    if (s.method.window_points == 0 && s.method.tolerance.enabled())
+      r.Fail(*n,
+             "window_points = 0 asks for one global solve, but a tolerance "
+             "marches in windows",
+             "expected window_points >= " + std::to_string(minimum) +
+                 ", or no window_points (16), or no tolerance");
   }
 }
 
@@ -193,10 +203,37 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
   if (!(s.t_end > 0))
     r.Fail(end, "end = " + FormatNumber(s.t_end) + " is not after 0",
            "expected end > 0 (a field scene starts at t = 0)");
+  const long long slice = s.space_points * s.components;
+  const long long minimum = sbp::Table(s.method.op).min_points;
+  const fields::WindowLinearSolver linear =
+      s.method.linear_solver == "sparse-lu"
+          ? fields::WindowLinearSolver::kSparseLu
+          : fields::WindowLinearSolver::kModes;
+  const long long most = fields::MaxSolvedAtOnce(s.method.op, linear);
+  if (s.method.tolerance.enabled()) {
+    // Error control chooses the time grid: no points, windows of 16 unless
+    // given.
+    if (const toml::node* p = t.get("points"))
+      r.Fail(*p,
+             "points and [method] tolerance exclude each other: the "
+             "tolerance chooses the grid",
+             "expected no points (error control), or no tolerance (a uniform "
+             "grid)");
+    s.where_time_points = r.Where(end);
+    const long long w =
+        s.method.window_points > 0 ? s.method.window_points : 16;
+    if (w * slice > most)
+      r.Fail(end,
+             "windows of " + std::to_string(w) + " × " + std::to_string(slice) +
+                 " values are too large for " + s.method.op,
+             "expected at most " + std::to_string(most) +
+                 " values solved at once: fewer spatial points or a shorter "
+                 "[method] window_points");
+    return;
+  }
   const toml::node& points =
       r.Require(t, "time", "points", "points = Nt, time points on [0, end]");
   s.where_time_points = r.Where(points);
-  const long long minimum = sbp::Table(s.method.op).min_points;
   const std::string at_least =
       "at least " + std::to_string(minimum) + " for " + s.method.op;
   s.time_points = r.Whole(points, "points", 0, "a whole number, " + at_least);
@@ -205,7 +242,6 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
         points,
         "points = " + std::to_string(s.time_points) + " is below the minimum",
         "expected " + at_least);
-  const long long slice = s.space_points * s.components;
   const long long kept_slices = kMaxFieldValues / slice;
   if (s.time_points > kept_slices)
     r.Fail(points,
@@ -222,7 +258,6 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
            "expected window_points <= points (or 0 for one global solve)");
   }
   const long long at_once = (w > 0 ? w : s.time_points) * slice;
-  const long long most = fields::MaxSolvedAtOnce(s.method.op);
   if (at_once <= most) return;
   // The longest window of at most 16 points that fits, if any does.
   const long long fits = std::min<long long>(16, most / slice);

@@ -8,10 +8,7 @@
 
 namespace vivp::scene::detail {
 
-namespace {
-
-// tolerance = 1e-6 (absolute and relative) or {absolute = …, relative = …}.
-void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
+variational::Tolerance ReadTolerance(const TomlReader& r, const toml::node& n) {
   const std::string expected =
       "expected tolerance = 1e-6 (absolute and relative) or tolerance = "
       "{absolute = 1e-8, relative = 1e-6}, numbers in [0, 1) with at least "
@@ -42,8 +39,10 @@ void ReadTolerance(const TomlReader& r, const toml::node& n, Scene& s) {
                " is beyond double precision",
            "expected a relative tolerance of at least 1e-14 (or 0 with an "
            "absolute one)");
-  s.method.tolerance = tol;
+  return tol;
 }
+
+namespace {
 
 // The settings of a refusal as a scene writes them: `slab_points = 0`,
 // `solver = "ceres-lm"`, and "a tolerance" when one is given.
@@ -115,7 +114,8 @@ void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s) {
                 "0 (one global solve) or at least " +
                     std::to_string(sbp::Table(s.method.op).min_points) +
                     " for " + s.method.op);
-  if (const toml::node* n = t.get("tolerance")) ReadTolerance(r, *n, s);
+  if (const toml::node* n = t.get("tolerance"))
+    s.method.tolerance = ReadTolerance(r, *n);
   ResolveWindow(r, t, s);
 }
 

@@ -267,7 +267,7 @@ RunOutcome RunStepper(const problems::Composed<D>& lagrangian, const Scene& s,
         output_seconds += Since(t0);
       });
   out.seconds = Since(start) - output_seconds;
-  out.converged = r.status == steppers::Status::kOk;
+  out.converged = r.status == steppers::StepOutcome::kOk;
   out.status = out.converged
                    ? "completed"
                    : steppers::ToString(r.status) +

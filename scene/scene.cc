@@ -59,7 +59,7 @@ bool Scene::Wants(const std::string& diagnostic) const {
 
 bool Scene::dissipative() const {
   return std::any_of(effects.begin(), effects.end(),
-                     [](const EffectSpec& e) { return e.type->dissipative; });
+                     [](const ListedEffect& e) { return e.type->dissipative; });
 }
 
 const EffectType* Scene::registered() const {

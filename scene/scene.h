@@ -47,7 +47,10 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct EffectSpec {
+// An effect as a scene lists it (an [[effect]] or a field's [[term]]
+// table): its type in the catalogue, its parameter values, where it stands.
+// (What a type declares of itself is problems::EffectSpec.)
+struct ListedEffect {
   const EffectType* type = nullptr;
   ParameterValues values;  // every parameter of the type, defaults filled in
   int line = 0, column = 0;
@@ -57,7 +60,7 @@ struct Scene {
   std::string source;  // file name, for messages
   std::string title;
   int dof = 1;
-  std::vector<EffectSpec> effects;
+  std::vector<ListedEffect> effects;
   std::vector<double> x0, v0;  // v0 empty for a first-order system
   int order = 2;               // 2: some effect has kinetic energy
   double t_start = 0, t_end = 1;

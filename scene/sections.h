@@ -24,6 +24,9 @@ const toml::node& ReadSystem(const TomlReader& r, const toml::table& root,
 void ReadEffects(const TomlReader& r, const toml::table& root,
                  const toml::node& dof_node, Scene& s);
 void ReadMethod(const TomlReader& r, const toml::table& root, Scene& s);
+// tolerance = 1e-6 (absolute and relative) or {absolute = …, relative = …}
+// at n, for a point or a field scene's [method].
+variational::Tolerance ReadTolerance(const TomlReader& r, const toml::node& n);
 void ReadInitial(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadTime(const TomlReader& r, const toml::table& root, Scene& s);
 void ReadOutput(const TomlReader& r, const toml::table& root, Scene& s);
@@ -38,8 +41,8 @@ std::vector<std::string> ReadDiagnosticList(
 // A table naming its type among `catalogue` (an [[effect]] or a field's
 // [[term]], the noun of the messages) and giving that type's parameters,
 // each checked against its kind (dof: the length of vector parameters).
-EffectSpec ReadTypedTable(const TomlReader& r, const toml::table& t,
-                          const std::vector<EffectType>& catalogue,
-                          const std::string& noun, int dof);
+ListedEffect ReadTypedTable(const TomlReader& r, const toml::table& t,
+                            const std::vector<EffectType>& catalogue,
+                            const std::string& noun, int dof);
 
 }  // namespace vivp::scene::detail

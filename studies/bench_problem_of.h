@@ -55,7 +55,7 @@ std::vector<double> GaussReference(const Problem& problem, double t_end,
   const auto init = problems::InitialState(problem);
   typename System::Vector y = System::Vector::Map(init.data());
   const steppers::RunReport r = Integrate(stepper, y, t_end / n, n);
-  if (r.status != steppers::Status::kOk)
+  if (r.status != steppers::StepOutcome::kOk)
     throw std::runtime_error("reference run failed: " + ToString(r.status));
   return std::vector<double>(y.data(), y.data() + y.size());
 }

@@ -100,14 +100,14 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
   } catch (const std::invalid_argument&) {
     throw;
   } catch (const std::exception& e) {
-    s.message = std::string("failed: ") + e.what();
+    s.status.reason = std::string("failed: ") + e.what();
   }
-  r.converged = s.converged;
-  r.reason = s.message;
+  r.converged = s.status.converged;
+  r.reason = s.status.reason;
   r.iterations = int(s.factorizations);
   r.windows = s.windows;
   r.seconds = s.seconds_total;
-  if (!s.converged) return r;
+  if (!s.status.converged) return r;
   const std::size_t last = s.t.size() - 1, n = std::size_t(dx.points());
   r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected = 0;
   for (int j = 0; j < dx.points(); ++j) {
@@ -196,6 +196,89 @@ FieldConvergenceStudy RunFieldConvergence(const FieldProblem& p,
   FitOrders(fit, round_off_floor);
   study.orders = fit.orders;
   study.orders_true_dt = fit.orders_true_dt;
+  return study;
+}
+
+FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
+                                        const FieldStudyOptions& o,
+                                        const std::vector<double>& tolerances,
+                                        double round_off_floor) {
+  if (o.space_points.size() != 1)
+    throw std::invalid_argument(
+        "an error-control study takes one number of spatial points, got " +
+        List(o.space_points));
+  const auto dx = FieldSpace(p, o.space_order, o.space_points[0]);
+  const long long window = o.window_points > 0 ? o.window_points : 16;
+  if (window * dx.points() > fields::MaxSolvedAtOnce(o.op))
+    throw std::invalid_argument(
+        "windows of " + std::to_string(window) + " × " +
+        std::to_string(dx.points()) + " values exceed the " +
+        std::to_string(fields::MaxSolvedAtOnce(o.op)) + " solved at once");
+  for (double tol : tolerances)
+    if (!(tol > 0 && tol < 1))
+      throw std::invalid_argument("a tolerance must lie in (0, 1), got " +
+                                  std::to_string(tol));
+  std::vector<double> phi(dx.points()), pi(dx.points());
+  for (int j = 0; j < dx.points(); ++j) p.exact(0.0, dx.x(j), &phi[j], &pi[j]);
+  const fields::ComposedDensity<1> density{p.terms};
+  FieldConvergenceStudy study;
+  for (double tol : tolerances) {
+    fields::FieldSolveOptions options;
+    options.tolerance = {tol, tol};
+    const fields::FieldGrid grid{
+        .op = o.op, .points = 0, .t_end = o.t_end, .window_points = window};
+    FieldConvergenceRow r;
+    r.tolerance = tol;
+    r.space_points = dx.points();
+    r.dx = dx.dx();
+    fields::FieldSolution s;
+    try {
+      s = fields::SolveField(density, dx, grid, phi, pi, options);
+    } catch (const std::invalid_argument&) {
+      throw;
+    } catch (const std::exception& e) {
+      s.status.reason = std::string("failed: ") + e.what();
+    }
+    r.converged = s.status.converged;
+    r.reason = s.status.reason;
+    r.iterations = int(s.factorizations);
+    r.windows = s.windows;
+    r.rejected = s.rejected;
+    r.points = s.points;
+    r.seconds = s.seconds_total;
+    if (s.status.converged) {
+      const std::size_t n = std::size_t(dx.points());
+      const std::size_t last = s.t.size() - 1;
+      r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected = 0;
+      r.max_error = r.max_error_v = 0;
+      for (int j = 0; j < dx.points(); ++j) {
+        double u = 0, u_t = 0;
+        p.exact(o.t_end, dx.x(j), &u, &u_t);
+        r.err_x = std::max(r.err_x, std::abs(s.end_phi_node[j] - u));
+        r.err_v = std::max(r.err_v, std::abs(s.phi_t[last * n + j] - u_t));
+        r.err_x_corrected =
+            std::max(r.err_x_corrected, std::abs(s.end.phi[j] - u));
+        r.err_p_corrected =
+            std::max(r.err_p_corrected, std::abs(s.end.phi_t[j] - u_t));
+      }
+      for (std::size_t k = 0; k < s.t.size(); ++k)
+        for (int j = 0; j < dx.points(); ++j) {
+          double u = 0, u_t = 0;
+          p.exact(s.t[k], dx.x(j), &u, &u_t);
+          r.max_error = std::max(r.max_error, std::abs(s.phi[k * n + j] - u));
+          r.max_error_v =
+              std::max(r.max_error_v, std::abs(s.phi_t[k * n + j] - u_t));
+        }
+      r.error_estimate = s.end.phi_estimate;
+    }
+    study.rows.push_back(r);
+  }
+  ConvergenceStudy fit;
+  for (const auto& r : study.rows) fit.rows.push_back(r);
+  FitTracking(fit, round_off_floor);
+  study.tracking = fit.tracking;
+  study.tracking_max = fit.tracking_max;
+  study.tracking_max_v = fit.tracking_max_v;
   return study;
 }
 

@@ -66,6 +66,9 @@ struct FieldConvergenceStudy {
   // In time: against Δt = T/Nt and T/(Nt − 1) (convergence.h); in space:
   // both against Δx.
   ConvergenceOrders orders, orders_true_dt;
+  // Error control (RunFieldTolerance): how the corrected end error and the
+  // largest errors of φ and φ_t over the kept slices follow the tolerance.
+  ToleranceTracking tracking, tracking_max, tracking_max_v;
 };
 
 // The study over o.points (o.space_points one value) or over
@@ -74,5 +77,15 @@ struct FieldConvergenceStudy {
 FieldConvergenceStudy RunFieldConvergence(const FieldProblem& problem,
                                           const FieldStudyOptions& o,
                                           double round_off_floor = 1e-13);
+
+// Error control (docs/error_control.md): one march per tolerance (absolute =
+// relative) on o.space_points[0] points, in windows of o.window_points (0:
+// 16); each row has the corrected end errors, the largest errors of φ and
+// φ_t over every kept slice (max_error, max_error_v), the time nodes
+// (points), windows and rejected windows. o.points is not used.
+FieldConvergenceStudy RunFieldTolerance(const FieldProblem& problem,
+                                        const FieldStudyOptions& o,
+                                        const std::vector<double>& tolerances,
+                                        double round_off_floor = 1e-13);
 
 }  // namespace vivp::studies

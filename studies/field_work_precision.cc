@@ -156,8 +156,9 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
     m.output_every = m.steps / 8;
     const auto s =
         fields::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
-    return floors[nx] =
-               s.converged ? SampledError(s, p.dx, o.t_end, o.omega) : INFINITY;
+    return floors[nx] = s.status.converged
+                            ? SampledError(s, p.dx, o.t_end, o.omega)
+                            : INFINITY;
   };
   auto mol = [&](const Problem& p, const std::string& method, long long steps,
                  double tol) {
@@ -167,13 +168,17 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
                          .output_every = steps / 8};
     const auto s =
         fields::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
-    FieldWorkRun r{
-        method,        method == "dopri5" ? "tolerance" : "fixed step",
-        p.dx.points(), s.steps,
-        tol,           0,
-        s.seconds,     s.converged,
-        s.message};
-    r.error = s.converged ? SampledError(s, p.dx, o.t_end, o.omega) : INFINITY;
+    FieldWorkRun r{method,
+                   method == "dopri5" ? "tolerance" : "fixed step",
+                   p.dx.points(),
+                   s.steps,
+                   tol,
+                   0,
+                   s.seconds,
+                   s.status.converged,
+                   s.status.reason};
+    r.error =
+        s.status.converged ? SampledError(s, p.dx, o.t_end, o.omega) : INFINITY;
     return r;
   };
   struct Variational {
@@ -198,9 +203,10 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
                    0,
                    0,
                    s.seconds_total,
-                   s.converged,
-                   s.message};
-    r.error = s.converged ? SampledError(s, p.dx, o.t_end, o.omega) : INFINITY;
+                   s.status.converged,
+                   s.status.reason};
+    r.error =
+        s.status.converged ? SampledError(s, p.dx, o.t_end, o.omega) : INFINITY;
     return r;
   };
   // Re-times a found run as the median of o.repeats runs when it is short.
@@ -269,8 +275,8 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
     }
     // A window's cost per time step against one Gauss4 step at the same Δt
     // on the same grid: Gauss4 run with the variational step count.
-    const FieldWorkBest& v = report.cheapest[report.cheapest.size() -
-                                             FieldWorkFamilies().size()];
+    const FieldWorkBest& v =
+        report.cheapest[report.cheapest.size() - FieldWorkFamilies().size()];
     if (v.found) {
       FieldStepCost c{target, nx, v.run.config, v.run.steps,
                       v.run.seconds / double(v.run.steps)};

@@ -213,7 +213,7 @@ BOOST_AUTO_TEST_CASE(BoundaryData_AreReadCheckedAndSolved) {
   const auto dx = s.Space();
   for (int j = 0; j < 101; ++j) s.exact(0.0, dx.x(j), &s.phi0[j], &s.phi_t0[j]);
   const auto run = scene::RunFieldScene(s);
-  BOOST_TEST_REQUIRE(run.solution.converged, run.solution.message);
+  BOOST_TEST_REQUIRE(run.solution.status.converged, run.solution.status.reason);
   double flipped = 0;
   for (int j = 0; j < 101; ++j)
     flipped = std::max(flipped, std::abs(run.solution.end.phi[j] + s.phi0[j]));

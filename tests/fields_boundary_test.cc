@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(dirichlet_and_neumann_data_by_multipliers) {
 
 // L = ½φ_t² − ½(1 + φ²)φ_x²: a flux that depends on φ.
 struct Stiffening {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   template <class T>
   T operator()(const T* p, const T* pt, const T* px) const {
     return T(0.5) * pt[0] * pt[0] -

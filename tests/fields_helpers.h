@@ -30,7 +30,7 @@ fields::FieldSolution Solve(const auto& density, const U& u,
                             const fields::FieldSolveOptions& options = {}) {
   auto [phi, pi] = fields::InitialData(u, dx);
   auto s = fields::SolveField(density, dx, grid, phi, pi, options);
-  BOOST_REQUIRE_MESSAGE(s.converged, s.message);
+  BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
   return s;
 }
 

@@ -26,7 +26,7 @@ namespace {
 // Two components coupled through a mass matrix and with unequal wave
 // speeds: L = ½|φ_t|² − 0.7|φ_x|² − ½φᵀKφ, K = [[1.3, 0.3], [0.3, 0.9]].
 struct CoupledKleinGordon {
-  static constexpr int kComponents = 2;
+  static constexpr int kDim = 2;
   template <class T>
   T operator()(const T* p, const T* pt, const T* px) const {
     return T(0.5) * (pt[0] * pt[0] + pt[1] * pt[1]) -
@@ -41,8 +41,8 @@ const char* const kOperators[] = {"sbp21", "sbp42", "sbp63", "sbp84"};
 // The relative agreement of one linear solve followed by one refinement
 // step: 1e-11, except SBP84, whose window systems have condition numbers
 // near 4e9 (docs/fields.md §3): its bound is the measured worst of this
-// file's cases (8.5e-12) with room for the machine. Marches agree to 1e-11 for every
-// operator (measured: 5e-15 at most), since both iterate to the same
+// file's cases (8.5e-12) with room for the machine. Marches agree to 1e-11 for
+// every operator (measured: 5e-15 at most), since both iterate to the same
 // critical point.
 double Bound(const std::string& op) { return op == "sbp84" ? 5e-11 : 1e-11; }
 
@@ -53,7 +53,7 @@ template <class Density>
 double LinearSolveAgreement(const Density& density,
                             const SpaceDerivative<double>& dx, const char* op,
                             int w, bool left, bool right) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   const sbp::RegularizedOperator<double> dt(
       sbp::MakeOperator<double>(op, w, 0.0, 0.05 * (w - 1)));
   const int nx = dx.points();
@@ -159,7 +159,7 @@ const char* Name(Ends e) {
 template <class Density>
 double MarchAgreement(const Density& density, Ends ends, const char* op,
                       std::string& detail) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   const int nx = 24;
   const auto dx = ends == Ends::kPeriodic
                       ? SpaceDerivative<double>::Periodic(4, nx, -4.0, 8.0)
@@ -195,8 +195,8 @@ double MarchAgreement(const Density& density, Ends ends, const char* op,
   const auto lu = fields::SolveField(density, dx, grid, phi0, pi0, o);
   o.linear = fields::WindowLinearSolver::kModes;
   const auto modes = fields::SolveField(density, dx, grid, phi0, pi0, o);
-  BOOST_REQUIRE_MESSAGE(lu.converged, lu.message);
-  BOOST_REQUIRE_MESSAGE(modes.converged, modes.message);
+  BOOST_REQUIRE_MESSAGE(lu.status.converged, lu.status.reason);
+  BOOST_REQUIRE_MESSAGE(modes.status.converged, modes.status.reason);
   BOOST_REQUIRE(lu.phi.size() == modes.phi.size());
   double diff = 0, size = 0;
   for (std::size_t k = 0; k < lu.phi.size(); ++k) {

@@ -204,13 +204,14 @@ BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
       // too coarse for the solution is rejected by the march's check 3
       // instead, after its window: here, 400 points for 139 periods).
       const bool refused =
-          s.windows == 0 && s.message.find("use at least") != std::string::npos;
-      BOOST_TEST_MESSAGE("  " << s.message);
+          s.windows == 0 &&
+          s.status.reason.find("use at least") != std::string::npos;
+      BOOST_TEST_MESSAGE("  " << s.status.reason);
       BOOST_TEST(refused == !within);
       if (!within) {
-        BOOST_TEST(!s.converged);
-        BOOST_TEST(s.message.find("under-resolved") != std::string::npos);
-        BOOST_TEST(s.message.find("use at least") != std::string::npos);
+        BOOST_TEST(!s.status.converged);
+        BOOST_TEST(s.status.reason.find("under-resolved") != std::string::npos);
+        BOOST_TEST(s.status.reason.find("use at least") != std::string::npos);
         BOOST_TEST(s.phi.empty());
       }
     }
@@ -299,7 +300,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_orders_and_agreement) {
     const auto s = fields::SolveFieldMol(
         sg, dx, t_end, phi0, pi0,
         {.method = method, .steps = steps, .tolerance = tol});
-    BOOST_REQUIRE_MESSAGE(s.converged, s.message);
+    BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
     return std::vector<double>(s.phi.end() - dx.points(), s.phi.end());
   };
   const auto reference = mol("gauss6", 256);
@@ -336,7 +337,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_orders_and_agreement) {
   for (const int nt : {33, 65, 129}) {
     const auto s =
         fields::SolveField(sg, dx, {"sbp42", nt, t_end, 0}, phi0, pi0);
-    BOOST_REQUIRE_MESSAGE(s.converged, s.message);
+    BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
     h.push_back(t_end / (nt - 1));
     err.push_back(distance(s.end_phi_node));
   }
@@ -353,7 +354,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_orders_and_agreement) {
 namespace {
 // ℒ = ½φ_t² + φ_t φ_x − ½φ_x²: the momentum φ_t + φ_x depends on φ_x.
 struct MovingFrame {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   template <class T>
   T operator()(const T*, const T* pt, const T* px) const {
     return T(0.5) * pt[0] * pt[0] + pt[0] * px[0] - T(0.5) * px[0] * px[0];
@@ -371,8 +372,8 @@ BOOST_AUTO_TEST_CASE(method_of_lines_refuses_with_its_reason) {
       fields::InitialData(fields::KleinGordonPlaneWave{kg, 1.0, 1.0}, dx);
   const auto s = fields::SolveFieldMol(kg, dx, 1.0, phi0, pi0,
                                        {.method = "leapfrog", .steps = 4});
-  BOOST_TEST(!s.converged);
-  BOOST_TEST(s.message.find("use at least") != std::string::npos);
+  BOOST_TEST(!s.status.converged);
+  BOOST_TEST(s.status.reason.find("use at least") != std::string::npos);
   BOOST_TEST(s.t.size() == 1u);  // nothing past t = 0
   BOOST_CHECK_EXCEPTION(
       fields::SolveFieldMol(MovingFrame{}, dx, 1.0, phi0, pi0),

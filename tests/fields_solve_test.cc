@@ -42,7 +42,7 @@ constexpr Kinds kNatural = {action::BoundaryKind::kNatural,
 template <class Density>
 void CheckJacobian(const Density& density, const SpaceDerivative<double>& dx,
                    const char* op, int nt, Kinds kinds = kNatural) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   const sbp::RegularizedOperator<double> dt(
       sbp::MakeOperator<double>(op, nt, 0.0, 0.4));
   const int n = dx.points() * m;

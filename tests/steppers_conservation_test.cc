@@ -17,7 +17,7 @@
 
 namespace bdata = boost::unit_test::data;
 using namespace vivp;
-using steppers::Status;
+using steppers::StepOutcome;
 
 namespace {
 
@@ -75,7 +75,7 @@ BOOST_DATA_TEST_CASE(Kepler_AngularMomentumKeptToRoundOff,
   const problems::Kepler kepler;
   const long n = 10000;  // 50 orbits at 200 steps per orbit
   const Drift d = MeasureDrift(kepler, method, 2 * M_PI / 200, n);
-  BOOST_TEST_REQUIRE((d.report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((d.report.status == StepOutcome::kOk));
   const double l0 = std::fabs(
       kepler.Invariants(Initial(kepler).data(), Initial(kepler).data() + 2)[0]);
   BOOST_TEST_MESSAGE(method << ": max |Δℓ| = " << d.invariants[0] << " = "
@@ -104,7 +104,7 @@ BOOST_DATA_TEST_CASE(Nldnls_ChargeKeptWithinOneEMinusTwelveOverTenThousandSteps,
                      method) {
   const Chain chain;
   const Drift d = MeasureDrift(chain, method, 0.05, 10000);
-  BOOST_TEST_REQUIRE((d.report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((d.report.status == StepOutcome::kOk));
   const auto y0 = Initial(chain);
   const double charge = chain.Invariants(y0.data(), y0.data() + Chain::kDim)[0];
   BOOST_TEST_MESSAGE(method << ": charge drift " << d.invariants[0] / charge
@@ -165,11 +165,11 @@ BOOST_DATA_TEST_CASE(Kepler_SymmetricMethodsAreTimeReversibleToRoundOff,
   const double h = 2 * M_PI / 200;
   double scale = 0;
   for (int k = 0; k < n; ++k) {
-    BOOST_TEST_REQUIRE((stepper.Step(y, h).status == Status::kOk));
+    BOOST_TEST_REQUIRE((stepper.Step(y, h).status == StepOutcome::kOk));
     scale = std::max(scale, y.lpNorm<Eigen::Infinity>());
   }
   for (int k = 0; k < n; ++k)
-    BOOST_TEST_REQUIRE((stepper.Step(y, -h).status == Status::kOk));
+    BOOST_TEST_REQUIRE((stepper.Step(y, -h).status == StepOutcome::kOk));
   const double miss = (y - y0).lpNorm<Eigen::Infinity>();
   BOOST_TEST_MESSAGE(method << ": return error " << miss << " = "
                             << miss / (n * kEps * scale) << " n·eps·scale");

@@ -17,7 +17,7 @@
 
 namespace bdata = boost::unit_test::data;
 using namespace vivp;
-using steppers::Status;
+using steppers::StepOutcome;
 
 namespace {
 
@@ -69,7 +69,7 @@ BOOST_DATA_TEST_CASE(StiffSpring_GaussMethodsBoundedAtHOmegaTen,
   const long n = 1000;
   const EnergyHistory r = Run(spring, method, 0.1, n, n);
   const double e0 = 0.5 * spring.omega * spring.omega;
-  BOOST_TEST_REQUIRE((r.report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((r.report.status == StepOutcome::kOk));
   BOOST_TEST_MESSAGE(method << ": max relative energy error " << r.all / e0
                             << " = " << r.all / (e0 * n * kEps)
                             << " n·eps, iterations/step "
@@ -86,7 +86,7 @@ BOOST_DATA_TEST_CASE(StiffSpring_ExplicitMethodsReportedUnstable,
                             << steppers::ToString(r.report.status)
                             << " at t = " << r.report.failed_at << " after "
                             << r.report.steps << " steps");
-  BOOST_TEST((r.report.status == Status::kUnstable));
+  BOOST_TEST((r.report.status == StepOutcome::kUnstable));
   BOOST_TEST(r.report.steps < 1000);
   BOOST_TEST(std::isfinite(r.report.failed_at));
 }
@@ -102,7 +102,7 @@ BOOST_DATA_TEST_CASE(Kepler_TenThousandPeriodsEnergyErrorBounded,
   const long periods = 10000;
   const EnergyHistory r = Run(problems::Kepler{}, method, 2 * M_PI / per_period,
                               periods * per_period, 10L * per_period);
-  BOOST_TEST_REQUIRE((r.report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((r.report.status == StepOutcome::kOk));
   BOOST_TEST_MESSAGE(method << ": max |ΔH| first 10 periods " << r.early
                             << ", all " << periods << " periods " << r.all);
   BOOST_TEST(r.all <= 1.5 * r.early);
@@ -120,7 +120,7 @@ BOOST_DATA_TEST_CASE(KeplerHighEccentricity_StableThroughPericentre,
   const long per_period = 2000, n = 10 * per_period;
   const EnergyHistory r =
       Run(kepler, method, 2 * M_PI / per_period, n, per_period);
-  BOOST_TEST_REQUIRE((r.report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((r.report.status == StepOutcome::kOk));
   BOOST_TEST_MESSAGE(method << ": max |ΔH| first period " << r.early
                             << ", ten periods " << r.all << ", iterations/step "
                             << r.report.iterations_per_step());
@@ -155,7 +155,7 @@ BOOST_DATA_TEST_CASE(NldnlsLargeAmplitude_ChargeAndBoundsHeld,
           max_rho =
               std::max(max_rho, 0.5 * (x[k] * x[k] + x[16 + k] * x[16 + k]));
       });
-  BOOST_TEST_REQUIRE((report.status == Status::kOk));
+  BOOST_TEST_REQUIRE((report.status == StepOutcome::kOk));
   BOOST_TEST_MESSAGE(method << ": charge drift " << charge_drift / charge0
                             << ", energy drift " << energy_drift / std::fabs(e0)
                             << ", max |z|² " << max_rho << " of charge "

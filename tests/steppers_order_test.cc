@@ -52,7 +52,7 @@ vivp::linalg::PowerLawFit MeasureOrder(const Problem& problem, double t_end,
     const auto init = vivp::problems::InitialState(problem);
     typename System::Vector y = System::Vector::Map(init.data());
     const auto report = steppers::Integrate(stepper, y, t_end / n, n);
-    BOOST_TEST_REQUIRE((report.status == steppers::Status::kOk));
+    BOOST_TEST_REQUIRE((report.status == steppers::StepOutcome::kOk));
     double e = 0;
     for (int i = 0; i < y.size(); ++i)
       e = std::max(e, std::fabs(y[i] - exact[i]));

@@ -29,7 +29,7 @@ FieldCharges ChargesOfSlice(const Density& density,
                             const sbp::SpaceDerivative<double>& dx,
                             std::span<const double> phi,
                             std::span<const double> phi_t) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   const int n = dx.points();
   std::vector<double> phi_x(phi.size());
   dx.ApplyComponents(m, phi, phi_x);

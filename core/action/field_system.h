@@ -58,7 +58,7 @@ struct FieldValues {
 template <class Density, class Real = double>
 class FieldSystem {
  public:
-  static constexpr int m = Density::kComponents;
+  static constexpr int m = Density::kDim;
   static constexpr int K = 3 * m;  // the density's arguments (φ, φ_t, φ_x)
   using Scalar = Real;
   using Hessian = Eigen::Matrix<Real, K, K>;

@@ -5,7 +5,7 @@
 // refinement in discrete initial boundary value problems", 2024).
 //
 // A density is a functor templated on the scalar, like a point-mechanics
-// Lagrangian, with kComponents field components:
+// Lagrangian, with kDim field components:
 //
 //   template <class T>
 //   T operator()(const T* phi, const T* phi_t, const T* phi_x) const;
@@ -21,7 +21,7 @@ namespace vivp::fields {
 
 // The wave equation, V = 0.
 struct Wave {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   double c = 1.0;
   template <class T>
   T operator()(const T* phi, const T* phi_t, const T* phi_x) const {
@@ -32,7 +32,7 @@ struct Wave {
 
 // Klein–Gordon, V = ½m²φ².
 struct KleinGordon {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   double mass = 1.0, c = 1.0;
   template <class T>
   T operator()(const T* phi, const T* phi_t, const T* phi_x) const {
@@ -43,7 +43,7 @@ struct KleinGordon {
 
 // Sine-Gordon, V = 1 − cos φ (units with m = c = 1).
 struct SineGordon {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   template <class T>
   T operator()(const T* phi, const T* phi_t, const T* phi_x) const {
     using std::cos;
@@ -54,7 +54,7 @@ struct SineGordon {
 
 // φ⁴ theory, V = ¼λ(φ² − v²)²: kinks between the vacua ±v.
 struct Phi4 {
-  static constexpr int kComponents = 1;
+  static constexpr int kDim = 1;
   double lambda = 2.0, v = 1.0;
   template <class T>
   T operator()(const T* phi, const T* phi_t, const T* phi_x) const {
@@ -67,7 +67,7 @@ struct Phi4 {
 // A complex field φ = φ₀ + iφ₁ with V = ½m²|φ|² + ¼λ|φ|⁴, invariant under
 // φ → e^{iα}φ; its Noether charge is Q = ∫ (φ₀ ∂_tφ₁ − φ₁ ∂_tφ₀) dx.
 struct ComplexPhi4 {
-  static constexpr int kComponents = 2;
+  static constexpr int kDim = 2;
   double mass = 1.0, lambda = 1.0;
   template <class T>
   T operator()(const T* phi, const T* phi_t, const T* phi_x) const {

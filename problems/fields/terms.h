@@ -134,7 +134,7 @@ using FieldTerm = std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
 
 template <int M>
 struct ComposedDensity {
-  static constexpr int kComponents = M;
+  static constexpr int kDim = M;
   std::vector<FieldTerm> terms;
 
   template <class T>

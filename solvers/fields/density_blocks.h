@@ -34,7 +34,7 @@ DensityBlocks BlocksOf(const H& h) {
 // a few generic points (a density that varies does so almost everywhere).
 template <class Density>
 bool HasConstantBlocks(const Density& density) {
-  constexpr int m = Density::kComponents, K = 3 * m;
+  constexpr int m = Density::kDim, K = 3 * m;
   auto call = [&](const auto* z) { return density(z, z + m, z + 2 * m); };
   Eigen::Matrix<double, K, K> first;
   for (int s = 0; s < 4; ++s) {
@@ -79,7 +79,7 @@ DensityBlocks MeanBlocks(const System& sys,
 // The blocks at one point z = (φ, φ_t, φ_x) (a constant density's).
 template <class Density>
 DensityBlocks BlocksAt(const Density& density, const double* z) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   auto call = [&](const auto* w) { return density(w, w + m, w + 2 * m); };
   return detail::BlocksOf<m>(autodiff::Hessian<double, 3 * m>(call, z).hessian);
 }

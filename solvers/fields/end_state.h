@@ -29,7 +29,7 @@ namespace detail {
 // Lagrangian in (φ, φ_t).
 template <class Density>
 struct PointLagrangian {
-  static constexpr int kDim = Density::kComponents;
+  static constexpr int kDim = Density::kDim;
   const Density* density;
   double phi_x[kDim];
   template <class T>
@@ -47,7 +47,7 @@ template <class Density>
 FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
                          const double* y,
                          const action::FieldValues<double>& v) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   const int last = system.time_points() - 1, nx = system.space_points();
   FieldEnd e;
   e.phi.resize(static_cast<std::size_t>(nx) * m);

@@ -93,7 +93,7 @@ void SetBoundaryData(System& sys, const FieldBoundary& b, double t0,
 template <class Density>
 class FieldWindow {
  public:
-  static constexpr int m = Density::kComponents;
+  static constexpr int m = Density::kDim;
   using System = action::FieldSystem<Density>;
   using Clock = std::chrono::steady_clock;
 
@@ -206,13 +206,13 @@ class FieldWindow {
                        : variational::Newton<double>(sys, y_, newton, sparse_);
     a.iterations = r.iterations;
     a.corrections = r.corrections;
-    timings_.residual += r.seconds.residual;
-    timings_.assembly += r.seconds.assembly;
-    timings_.factorization += r.seconds.factorization;
-    timings_.solve += r.seconds.solve;
-    residual_ = std::max(residual_, r.residual_norm);
+    timings_.residual += r.phases.residual;
+    timings_.assembly += r.phases.assembly;
+    timings_.factorization += r.phases.factorization;
+    timings_.solve += r.phases.solve;
+    residual_ = std::max(residual_, r.last_residual);
     if (!r.converged) {
-      a.residual = r.residual_norm;
+      a.residual = r.last_residual;
       a.failure = WindowFailure::kNewton;
       a.why = r.reason;
       return false;

@@ -45,6 +45,7 @@
 #include "solvers/fields/input.h"
 #include "solvers/fields/resolution.h"
 #include "solvers/steppers/tableau.h"
+#include "solvers/variational/summary.h"
 
 namespace vivp::fields {
 
@@ -58,8 +59,8 @@ struct MolOptions {
 };
 
 struct MolSolution {
-  bool converged = false;
-  std::string message;
+  // converged, reason, the wall time (a stepper has no Newton iterations).
+  variational::Summary status;
   int nx = 0, components = 0;
   std::vector<double> t, phi, phi_t;  // kept slices, (s·Nx + j)·m + a
   long long steps = 0, evaluations = 0;
@@ -78,7 +79,7 @@ inline const std::vector<std::string>& MolMethods() {
 template <class Density>
 class FieldAcceleration {
  public:
-  static constexpr int m = Density::kComponents;
+  static constexpr int m = Density::kDim;
 
   FieldAcceleration(const Density& density,
                     const sbp::SpaceDerivative<double>& dx,
@@ -226,7 +227,7 @@ MolSolution SolveFieldMol(const Density& density,
                           const std::vector<double>& phi0,
                           const std::vector<double>& pi0,
                           const MolOptions& options = {}) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   MolSolution s;
@@ -254,10 +255,11 @@ MolSolution SolveFieldMol(const Density& density,
   };
   auto finish = [&](bool ok, std::string message) {
     if (options.method != "dopri5") s.steps = options.steps;
-    s.converged = ok;
-    s.message = std::move(message);
+    s.status.converged = ok;
+    s.status.reason = std::move(message);
     s.evaluations = accel.evaluations();
     s.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    s.status.seconds = s.seconds;
     return s;
   };
   keep(0);

@@ -31,7 +31,7 @@ namespace vivp::fields {
 template <class Density>
 class FieldPredictor {
  public:
-  static constexpr int m = Density::kComponents;
+  static constexpr int m = Density::kDim;
   using State = std::vector<double>;
 
   // The data of one end of an interval at time t: g or h of component a.

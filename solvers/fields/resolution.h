@@ -79,7 +79,7 @@ double FastestFieldFrequency(const Density& density,
                              const sbp::SpaceDerivative<double>& dx, double rho,
                              std::span<const double> phi,
                              std::span<const double> phi_t) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   constexpr int K = 3 * m;
   const int n = dx.points();
   std::vector<double> phi_x(phi.size());

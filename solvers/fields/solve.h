@@ -51,6 +51,7 @@
 #include "solvers/variational/march_uniform.h"
 #include "solvers/variational/resolution.h"
 #include "solvers/variational/step_control.h"
+#include "solvers/variational/summary.h"
 
 namespace vivp::fields {
 
@@ -87,8 +88,9 @@ struct FieldSolveOptions {
 };
 
 struct FieldSolution {
-  bool converged = false;
-  std::string message;
+  // converged, reason, Newton iterations (Jacobian factorizations over all
+  // windows), the worst window's last residual, the wall time.
+  variational::Summary status;
   int nx = 0, components = 0;
   std::vector<double> t;                   // the kept slices' times
   std::vector<std::size_t> window_ends;    // kept slices that end a window
@@ -134,7 +136,7 @@ FieldSolution SolveField(const Density& density,
                          const FieldGrid& grid, std::vector<double> phi0,
                          std::vector<double> pi0,
                          const FieldSolveOptions& options = {}) {
-  constexpr int m = Density::kComponents;
+  constexpr int m = Density::kDim;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   FieldSolution s;
@@ -176,10 +178,12 @@ FieldSolution SolveField(const Density& density,
     const double omega =
         FastestFieldFrequency(density, dx, SpectralRadius(dx), phi0, pi0);
     s.omega_dt = s.dt * omega;
-    s.message = UnderResolved(grid.op, s.limit, s.dt, omega, 0.0, grid.t_end);
-    if (!s.message.empty()) {
+    s.status.reason =
+        UnderResolved(grid.op, s.limit, s.dt, omega, 0.0, grid.t_end);
+    if (!s.status.reason.empty()) {
       s.seconds_total =
           std::chrono::duration<double>(Clock::now() - start).count();
+      s.status.seconds = s.seconds_total;
       return s;
     }
   }
@@ -245,10 +249,11 @@ FieldSolution SolveField(const Density& density,
     ok = march.Run(state);
   }
   for (auto& e : s.window_ends) e = std::min(e, s.t.size() - 1);
-  s.converged = ok;
-  s.message =
+  s.status.converged = ok;
+  s.status.reason =
       ok ? std::string(adaptive ? "converged under error control" : "converged")
          : out.status.reason;
+  s.status.iterations = out.iterations;
   s.windows = int(out.window_count);
   s.factorizations = out.iterations;
   s.corrections = out.corrections;
@@ -283,6 +288,8 @@ FieldSolution SolveField(const Density& density,
   s.seconds_handoff = ft.handoff;
   s.seconds_predictor = ft.predictor;
   s.seconds_total = std::chrono::duration<double>(Clock::now() - start).count();
+  s.status.seconds = s.seconds_total;
+  s.status.last_residual = ok ? s.residual_norm : out.last_residual;
   return s;
 }
 

@@ -88,7 +88,7 @@ template <class Density>
 class ModesSolver {
  public:
   using System = action::FieldSystem<Density>;
-  static constexpr int m = Density::kComponents;
+  static constexpr int m = Density::kDim;
   // Spectral rounds (factorizations) per solve before the sparse LU.
   static constexpr int kRounds = 2;
 

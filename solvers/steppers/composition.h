@@ -68,7 +68,7 @@ class Composition {
     for (double b : coefficients_.beta) {
       const StepReport r = base_.Step(y, b * h);
       total.iterations += r.iterations;
-      if (r.status != Status::kOk) {
+      if (r.status != StepOutcome::kOk) {
         total.status = r.status;
         break;
       }

@@ -86,7 +86,7 @@ class DiscreteGradient {
       const Vector rhs = y + 0.5 * h * (jm * y) + h * System::ApplyJ(v);
       const Vector candidate = lhs.partialPivLu().solve(rhs);
       if (!candidate.allFinite()) {
-        report.status = Status::kNewtonFailed;
+        report.status = StepOutcome::kNewtonFailed;
         return report;
       }
       const double size = (candidate - next).template lpNorm<Eigen::Infinity>();
@@ -95,7 +95,7 @@ class DiscreteGradient {
       report.iterations = it;
       if (size >= previous) {
         if (size > 1e4 * kEps * scale) {
-          report.status = Status::kNewtonFailed;
+          report.status = StepOutcome::kNewtonFailed;
           return report;
         }
         break;  // stagnated at round-off: keep the better iterate
@@ -105,7 +105,7 @@ class DiscreteGradient {
       previous = size;
     }
     if (report.iterations >= max_iterations_) {
-      report.status = Status::kNewtonFailed;
+      report.status = StepOutcome::kNewtonFailed;
       return report;
     }
     y = next;

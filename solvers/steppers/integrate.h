@@ -15,7 +15,7 @@
 namespace vivp::steppers {
 
 struct RunReport {
-  Status status = Status::kOk;
+  StepOutcome status = StepOutcome::kOk;
   long steps = 0;          // steps completed
   long iterations = 0;     // implicit iterations, summed over steps
   int max_iterations = 0;  // most iterations in one step
@@ -53,11 +53,11 @@ RunReport Integrate(Stepper& stepper, Vector& y, double h, long steps,
     const StepReport r = stepper.Step(y, h);
     report.iterations += r.iterations;
     report.max_iterations = std::max(report.max_iterations, r.iterations);
-    Status status = r.status;
-    if (status == Status::kOk &&
+    StepOutcome status = r.status;
+    if (status == StepOutcome::kOk &&
         !(y.allFinite() && y.template lpNorm<Eigen::Infinity>() <= bound))
-      status = Status::kUnstable;
-    if (status != Status::kOk) {
+      status = StepOutcome::kUnstable;
+    if (status != StepOutcome::kOk) {
       report.status = status;
       report.failed_at = (n + 1) * h;
       break;

@@ -151,7 +151,7 @@ RunReport Dopri5(const HamiltonianSystem<Problem>& system,
       x, 0.0, t_end, t_end * 1e-3));
   y = Vector::Map(x.data());
   report.evaluations = system.evaluations() - e0;
-  if (!y.allFinite()) report.status = Status::kUnstable;
+  if (!y.allFinite()) report.status = StepOutcome::kUnstable;
   return report;
 }
 

@@ -93,7 +93,7 @@ class RungeKutta {
     double worst_rate = 0;
     for (int it = 1;; ++it) {
       if (it > options_.max_iterations) {
-        report.status = Status::kNewtonFailed;
+        report.status = StepOutcome::kNewtonFailed;
         return report;
       }
       for (int i = 0; i < s; ++i) f.col(i) = system_.Field(y + z.col(i));
@@ -104,7 +104,7 @@ class RungeKutta {
       lu_->Solve(Eigen::Map<const Eigen::VectorXd>(g.data(), s * kN), dz);
       dz = -dz;
       if (!dz.allFinite()) {
-        report.status = Status::kNewtonFailed;
+        report.status = StepOutcome::kNewtonFailed;
         return report;
       }
       const double size = dz.lpNorm<Eigen::Infinity>();
@@ -116,7 +116,7 @@ class RungeKutta {
       if (rate >= 1 && size > 1e4 * kEps * scale) {
         // Diverging, not stagnating: refresh Df at y once and start again.
         if (fresh) {
-          report.status = Status::kNewtonFailed;
+          report.status = StepOutcome::kNewtonFailed;
           return report;
         }
         df_ = system_.FieldJacobian(y);

@@ -5,26 +5,26 @@
 
 namespace vivp::steppers {
 
-enum class Status {
+enum class StepOutcome {
   kOk,
   kUnstable,      // the state left every bound (non-finite or blew up)
   kNewtonFailed,  // the implicit equations did not converge
 };
 
-inline std::string ToString(Status s) {
+inline std::string ToString(StepOutcome s) {
   switch (s) {
-    case Status::kOk:
+    case StepOutcome::kOk:
       return "ok";
-    case Status::kUnstable:
+    case StepOutcome::kUnstable:
       return "unstable";
-    case Status::kNewtonFailed:
+    case StepOutcome::kNewtonFailed:
       return "newton_failed";
   }
   return "unknown";
 }
 
 struct StepReport {
-  Status status = Status::kOk;
+  StepOutcome status = StepOutcome::kOk;
   int iterations = 0;  // nonlinear (or linearly implicit) iterations
 };
 

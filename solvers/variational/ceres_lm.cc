@@ -166,16 +166,16 @@ NewtonReport LmReport(const ceres::Solver::Summary& summary,
   NewtonReport report;
   report.iterations = static_cast<int>(summary.iterations.size()) - 1;
   report.corrections = report.iterations;
-  report.residual_norm = final_gradient;
+  report.last_residual = final_gradient;
   const double floor = std::max(
       std::sqrt(std::numeric_limits<double>::epsilon()) * initial_gradient,
       roundoff);
   report.converged = summary.termination_type == ceres::CONVERGENCE &&
-                     report.residual_norm <= floor;
+                     report.last_residual <= floor;
   std::ostringstream why;
   why << "Ceres LM: "
       << ceres::TerminationTypeToString(summary.termination_type) << " after "
-      << report.iterations << " iterations, |∇S|∞ = " << report.residual_norm;
+      << report.iterations << " iterations, |∇S|∞ = " << report.last_residual;
   if (!report.converged) why << " (above the acceptance bound " << floor << ")";
   report.reason = why.str();
   return report;

@@ -95,7 +95,7 @@ IvpSolution<double> SolveIvpCeres(const P& problem, const InitialData& initial,
       u[full.Lambda3(c)] = ceres_options.lambda3[c];
   NewtonReport report =
       detail::RunCeresLm(detail::MakeLmSystem(full, u), u, ceres_options);
-  report.seconds.total =
+  report.phases.total =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
   IvpSolution<double> s =

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "solvers/variational/newton.h"
+#include "solvers/variational/summary.h"
 
 namespace vivp::variational {
 
@@ -50,11 +51,6 @@ struct SolveOptions {
   std::vector<double> guess;
 };
 
-struct Status {
-  bool converged = false;
-  std::string reason;
-};
-
 // The multiplier-corrected end state (docs/method.md §7).
 template <class Real>
 struct CorrectedEnd {
@@ -77,7 +73,7 @@ struct IvpSolution {
   std::vector<Real> lambda1, lambda2, lambda3,
       lambda4;  // d each (λ2, λ4: order 2)
   CorrectedEnd<Real> corrected;
-  Status status;
+  Summary status;
   int iterations = 0;
   double gradient_norm = 0;        // ‖∇S‖∞ of the full doubled action
   double residual_norm = 0;        // ‖F‖∞ of the system that was solved

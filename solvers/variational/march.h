@@ -112,6 +112,12 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
+  out.status.iterations = out.iterations;
+  out.status.seconds = out.seconds;
+  if (out.status.converged)
+    out.status.last_residual = NAN;  // not evaluated
+  else
+    out.status.last_residual = out.last_residual;
   return out;
 }
 

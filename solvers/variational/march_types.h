@@ -80,7 +80,7 @@ struct WindowReport {
 };
 
 struct MarchResult {
-  Status status;
+  Summary status;  // iterations: Jacobian factorizations over all windows
   std::vector<double> t;  // time of every node (if kept); error control:
                           // not uniform
   Eigen::MatrixXd x, v;   // positions and D x per node (if kept)

@@ -44,6 +44,7 @@
 
 #include "core/linalg/banded.h"
 #include "solvers/variational/banded_lu.h"
+#include "solvers/variational/summary.h"
 
 namespace vivp::variational {
 
@@ -69,14 +70,12 @@ struct Timings {
   double total = 0;
 };
 
-struct NewtonReport {
-  bool converged = false;
-  std::string reason;
-  int iterations = 0;        // Jacobian factorizations
-  int corrections = 0;       // Newton + refinement steps taken
-  double last_step = 0;      // |δ|∞ of the last correction
-  double residual_norm = 0;  // |F(y)|∞ at the returned y
-  Timings seconds;
+// The Summary of one Newton solve (iterations: Jacobian factorizations;
+// last_residual: |F(y)|∞ at the returned y), and its steps and phases.
+struct NewtonReport : Summary {
+  int corrections = 0;   // Newton + refinement steps taken
+  double last_step = 0;  // |δ|∞ of the last correction
+  Timings phases;        // residual, assembly, factorization, solve, total
 };
 
 namespace detail {
@@ -203,16 +202,17 @@ NewtonReport Newton(
       residual_override(y.data(), f.data());
     else
       system.Residual(y.data(), f.data());
-    report.seconds.residual += clock.Since(t0);
+    report.phases.residual += clock.Since(t0);
     return detail::AllFinite(f);
   };
   auto finish = [&](bool ok, std::string why) {
     report.converged = ok;
     report.reason = std::move(why);
-    report.residual_norm = detail::AllFinite(f)
+    report.last_residual = detail::AllFinite(f)
                                ? double(detail::MaxAbs(f))
                                : std::numeric_limits<double>::quiet_NaN();
-    report.seconds.total = detail::Since(start);
+    report.phases.total = detail::Since(start);
+    report.seconds = report.phases.total;
     return report;
   };
 
@@ -231,10 +231,10 @@ NewtonReport Newton(
     if (!solver.valid) {
       auto t0 = clock.Now();
       solver.Assemble(system, y.data());
-      report.seconds.assembly += clock.Since(t0);
+      report.phases.assembly += clock.Since(t0);
       t0 = clock.Now();
       const bool ok = solver.Factorize();
-      report.seconds.factorization += clock.Since(t0);
+      report.phases.factorization += clock.Since(t0);
       ++report.iterations;
       if (!ok) {
         const std::string why = solver.message();
@@ -252,7 +252,7 @@ NewtonReport Newton(
       std::vector<Real>& delta = f;  // solve in place: δ = −J⁻¹F
       auto t0 = clock.Now();
       solver.Solve(delta.data());
-      report.seconds.solve += clock.Since(t0);
+      report.phases.solve += clock.Since(t0);
       Real step(0), ymax(1);
       for (int i = 0; i < n; ++i) {
         step = std::max(step, std::abs(delta[i]));

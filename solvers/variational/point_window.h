@@ -122,7 +122,7 @@ class PointWindow {
     a.iterations = o.report.iterations;
     a.corrections = o.report.corrections;
     if (!o.failure.empty()) {
-      a.residual = o.report.residual_norm;
+      a.residual = o.report.last_residual;
       Failed(a,
              o.split_helps ? WindowFailure::kNewton
                            : WindowFailure::kUnderResolved,

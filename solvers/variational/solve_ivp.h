@@ -109,9 +109,12 @@ IvpSolution<Real> Finish(const P& problem,
                                  s.order == 2 ? s.lambda4.data() : nullptr);
   s.status.converged = report.converged;
   s.status.reason = report.reason;
-  s.iterations = report.iterations;
-  s.residual_norm = report.residual_norm;
-  s.seconds = report.seconds;
+  s.status.iterations = report.iterations;
+  s.status.last_residual = report.last_residual;
+  s.status.seconds = report.phases.total;
+  s.iterations = int(report.iterations);
+  s.residual_norm = report.last_residual;
+  s.seconds = report.phases;
   return s;
 }
 
@@ -174,7 +177,10 @@ void CheckResolution(const P& problem, const Grid& grid, IvpSolution<Real>& s) {
     }
   }
   std::string why = UnderResolution(problem, grid, x[0], v[0], x[1], v[1]);
-  if (!why.empty()) s.status = {false, std::move(why)};
+  if (!why.empty()) {
+    s.status.converged = false;
+    s.status.reason = std::move(why);
+  }
 }
 
 // Checks the initial data against the problem (one value per DOF, finite, a
