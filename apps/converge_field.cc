@@ -13,7 +13,7 @@
 #include "apps/command.h"
 #include "apps/converge_command.h"
 #include "core/sbp/builder.h"
-#include "solvers/fields/composed.h"
+#include "solvers/spacetime/composed.h"
 #include "studies/field_problems.h"
 
 namespace vivp::apps {
@@ -79,12 +79,12 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
     const long long w =
         so.window_points > 0 ? std::min(so.window_points, nt) : nt;
     for (long long nx : so.space_points)
-      if (w * nx > fields::MaxSolvedAtOnce(so.op))
+      if (w * nx > spacetime::MaxSolvedAtOnce(so.op))
         throw UsageError(
             "--points " + std::to_string(nt) + " with --space-points " +
             std::to_string(nx) + ": " + std::to_string(w * nx) +
             " values solved at once exceed the " +
-            std::to_string(fields::MaxSolvedAtOnce(so.op)) + " allowed for " +
+            std::to_string(spacetime::MaxSolvedAtOnce(so.op)) + " allowed for " +
             so.op + "; march in windows with --slab-points 16");
   }
   return so;

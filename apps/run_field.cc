@@ -229,7 +229,7 @@ std::string Ends(const scene::FieldScene& s) {
 }
 
 void PrintRun(std::ostream& human, const scene::FieldScene& s,
-              const fields::FieldSolution& sol) {
+              const spacetime::FieldSolution& sol) {
   const auto dx = s.Space();
   human << (s.title.empty() ? s.source : s.title)
         << "\n  field: " << s.components
@@ -250,7 +250,7 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
         << Rounded(sol.limit) << ")\n";
 }
 
-nlohmann::json SolverJson(const fields::FieldSolution& sol) {
+nlohmann::json SolverJson(const spacetime::FieldSolution& sol) {
   return {{"windows", sol.windows},
           {"newton_iterations", sol.factorizations},
           {"corrections", sol.corrections},

@@ -1,4 +1,4 @@
-// Cost of the space-time field solve (solvers/fields), four tables:
+// Cost of the space-time field solve (solvers/spacetime), four tables:
 //
 // 0. Where a march's time goes: the sine-Gordon breather ω = 0.3 on
 //    [−40, 40) with 400 points, SBP42 in windows of 16, 1201 time points over
@@ -38,8 +38,8 @@
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/method_of_lines.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/method_of_lines.h"
+#include "solvers/spacetime/solve.h"
 
 using namespace vivp;
 
@@ -59,16 +59,16 @@ struct Row {
 // One Newton iteration over nt × nx points in windows of w time points
 // (w = nt: the whole grid), the linearization at φ(t, x) = φ₀(x) + tπ₀(x).
 Row NewtonIteration(const char* op, int nt, int nx, int w,
-                    fields::SparseSolver solver, bool modes) {
+                    spacetime::SparseSolver solver, bool modes) {
   const fields::SineGordon sg;
   const fields::SineGordonBreather breather{0.5};
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, nx, -20.0, 40.0);
   const double dt = 0.01;
   const auto [phi0, pi0] = fields::InitialData(breather, dx);
   Row row;
-  fields::PatternedMatrix jac;
-  fields::SparseLu lu(solver);
-  fields::ModesSolver<fields::SineGordon> spectral(sg);
+  spacetime::PatternedMatrix jac;
+  spacetime::SparseLu lu(solver);
+  spacetime::ModesSolver<fields::SineGordon> spectral(sg);
   int analyzed = 0;
   for (int start = 0; start < nt - 1; start += w - 1) {
     const int pts = std::min(w, nt - start);
@@ -153,15 +153,15 @@ void Table0() {
   const auto dx = sbp::SpaceDerivative<double>::Periodic(8, 400, -40.0, 80.0);
   const auto [phi0, pi0] =
       fields::InitialData(fields::SineGordonBreather{omega}, dx);
-  for (const auto linear : {fields::WindowLinearSolver::kSparseLu,
-                            fields::WindowLinearSolver::kModes}) {
-    fields::FieldSolveOptions o;
+  for (const auto linear : {spacetime::WindowLinearSolver::kSparseLu,
+                            spacetime::WindowLinearSolver::kModes}) {
+    spacetime::FieldSolveOptions o;
     o.linear = linear;
-    const fields::FieldGrid grid{.op = "sbp42",
+    const spacetime::FieldGrid grid{.op = "sbp42",
                                  .points = 1201,
                                  .t_end = 2 * std::numbers::pi / omega,
                                  .window_points = 16};
-    const auto r = fields::SolveField(sg, dx, grid, phi0, pi0, o);
+    const auto r = spacetime::SolveField(sg, dx, grid, phi0, pi0, o);
     const double known = r.seconds_residual + r.seconds_assembly +
                          r.seconds_factor + r.seconds_solve + r.seconds_setup +
                          r.seconds_check + r.seconds_handoff;
@@ -190,10 +190,10 @@ void Table1(bool quick) {
   struct Config {
     const char* op;
     int nt, nx, w;
-    fields::SparseSolver solver;
+    spacetime::SparseSolver solver;
     bool modes = false;
   };
-  using S = fields::SparseSolver;
+  using S = spacetime::SparseSolver;
   std::vector<Config> configs = {
       {"sbp21", 512, 512, 512, S::kUmfpack},
       {"sbp42", 512, 512, 8, S::kUmfpack},
@@ -237,7 +237,7 @@ void Table1(bool quick) {
           "| **%.2f** | %lld | %lld |",
           c.op,
           c.modes ? "modes"
-                  : std::string(fields::SparseSolverName(c.solver)).c_str(),
+                  : std::string(spacetime::SparseSolverName(c.solver)).c_str(),
           c.nt, c.nx, c.w == c.nt ? "global" : std::to_string(c.w).c_str(),
           r.windows, r.residual, r.assembly, r.factor, r.solve, total,
           r.jacobian_nnz, r.factor_nnz);
@@ -284,7 +284,7 @@ void Table2() {
       long long factorizations = 0;
       double seconds = 0;
       if (std::string(c.method) == "sbp42") {
-        auto s = fields::SolveField(sg, dx, {"sbp42", c.steps + 1, 100.0, 16},
+        auto s = spacetime::SolveField(sg, dx, {"sbp42", c.steps + 1, 100.0, 16},
                                     phi0, pi0);
         t = std::move(s.t), phi = std::move(s.phi);
         phi_t = std::move(s.phi_t);
@@ -292,7 +292,7 @@ void Table2() {
         windows = s.windows;
         factorizations = s.factorizations, seconds = s.seconds_total;
       } else {
-        auto s = fields::SolveFieldMol(
+        auto s = spacetime::SolveFieldMol(
             sg, dx, 100.0, phi0, pi0,
             {.method = c.method, .steps = c.steps, .output_every = 1});
         t = std::move(s.t), phi = std::move(s.phi);
@@ -340,9 +340,9 @@ void Table3() {
           sbp::SpaceDerivative<double>::Periodic(8, 512, -20.0, 40.0);
       const auto [phi0, pi0] =
           fields::InitialData(fields::SineGordonBreather{0.5}, dx);
-      fields::FieldSolveOptions o;
+      spacetime::FieldSolveOptions o;
       o.keep_field = false;
-      const auto s = fields::SolveField(
+      const auto s = spacetime::SolveField(
           sg, dx, {"sbp42", nt, 0.02 * (nt - 1), 16}, phi0, pi0, o);
       std::printf("| %d | %d | %.1f |", nt, s.windows, s.seconds_total);
       if (!s.status.converged) std::printf(" %s |", s.status.reason.c_str());

@@ -29,7 +29,7 @@
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
 #include "report/field_plots.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 using namespace vivp;
 
@@ -64,7 +64,7 @@ Curves Solve(const figures::FieldRun& run) {
   const auto [phi0, pi0] = fields::InitialData(breather, dx);
   const double e0 = action::ChargesOfSlice(sg, dx, phi0, pi0).energy;
   const auto s =
-      fields::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
+      spacetime::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
   if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Curves c;
   c.seconds = s.seconds_total;

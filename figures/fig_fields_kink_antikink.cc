@@ -32,7 +32,7 @@
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
 #include "report/field_plots.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 using namespace vivp;
 
@@ -64,7 +64,7 @@ Result Solve(const figures::FieldRun& run) {
       sbp::SpaceDerivative<double>::Periodic(8, run.nx, kX0, kLength);
   const auto [phi0, pi0] = fields::InitialData(exact, dx);
   const auto s =
-      fields::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
+      spacetime::SolveField(sg, dx, {"sbp42", run.nt, kEnd, 16}, phi0, pi0);
   if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Result r;
   r.seconds = s.seconds_total;

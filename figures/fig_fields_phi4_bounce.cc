@@ -57,7 +57,7 @@
 #include "problems/fields/exact.h"
 #include "report/field_plots.h"
 #include "report/plot.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 using namespace vivp;
 
@@ -133,7 +133,7 @@ Outcome Collide(double v, const Grid& g) {
   const Pair pair{{kPhi4, v, -kX0}, {kPhi4, -v, kX0}};
   const auto [phi0, pi0] = fields::InitialData(pair, dx);
   const long long nt = std::llround(g.t_end / g.dt) + 1;
-  const auto s = fields::SolveField(kPhi4, dx, {"sbp42", nt, g.t_end, g.window},
+  const auto s = spacetime::SolveField(kPhi4, dx, {"sbp42", nt, g.t_end, g.window},
                                     phi0, pi0);
   if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Outcome o;

@@ -58,9 +58,9 @@ sbp::SpaceDerivative<double> FieldScene::Space() const {
                                                int(space_points), x0, x1);
 }
 
-fields::FieldBoundary FieldScene::Boundary() const {
-  fields::FieldBoundary b;
-  fields::FieldBoundarySide* sides[2] = {&b.left, &b.right};
+spacetime::FieldBoundary FieldScene::Boundary() const {
+  spacetime::FieldBoundary b;
+  spacetime::FieldBoundarySide* sides[2] = {&b.left, &b.right};
   for (int side = 0; side < 2; ++side) {
     if (boundary == "periodic" || ends[side] == "natural") continue;
     sides[side]->kind = ends[side] == "dirichlet"

@@ -5,7 +5,7 @@
 
 #include "core/action/field_charges.h"
 #include "core/sbp/builder.h"
-#include "solvers/fields/composed.h"
+#include "solvers/spacetime/composed.h"
 
 namespace vivp::scene {
 
@@ -35,20 +35,20 @@ FieldRun Run(const FieldScene& s,
   const auto dx = s.Space();
   FieldRun run;
   for (int j = 0; j < dx.points(); ++j) run.x.push_back(dx.x(j));
-  fields::FieldSolveOptions options;
+  spacetime::FieldSolveOptions options;
   options.on_window = on_window;
   options.boundary = s.Boundary();
   options.tolerance = s.method.tolerance;
   options.max_points = kMaxFieldValues / (dx.points() * M);
   options.linear = s.method.linear_solver == "sparse-lu"
-                       ? fields::WindowLinearSolver::kSparseLu
-                       : fields::WindowLinearSolver::kModes;
-  const fields::FieldGrid grid{.op = s.method.op,
+                       ? spacetime::WindowLinearSolver::kSparseLu
+                       : spacetime::WindowLinearSolver::kModes;
+  const spacetime::FieldGrid grid{.op = s.method.op,
                                .points = s.time_points,
                                .t_end = s.t_end,
                                .window_points = s.method.window_points};
   run.solution =
-      fields::SolveField(density, dx, grid, s.phi0, s.phi_t0, options);
+      spacetime::SolveField(density, dx, grid, s.phi0, s.phi_t0, options);
   const auto& sol = run.solution;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.status.converged) return run;

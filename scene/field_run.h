@@ -1,5 +1,5 @@
 // Running a field scene: its terms become one density
-// (problems/fields/terms.h), SolveField (solvers/fields/solve.h) solves it
+// (problems/fields/terms.h), SolveField (solvers/spacetime/solve.h) solves it
 // globally or marching in windows, and the diagnostics the scene lists are
 // computed at every slice from the density alone (core/action/
 // field_charges.h) and, for the error, from the profile's exact solution.
@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "scene/field_scene.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 namespace vivp::scene {
 
 struct FieldRun {
-  fields::FieldSolution solution;  // every slice kept
+  spacetime::FieldSolution solution;  // every slice kept
   std::vector<double> x;           // the spatial grid
   // The scene's diagnostics in its order, one value per slice of solution.t:
   // energy, momentum, charge (∑ Hˣ of the densities) and error

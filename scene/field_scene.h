@@ -51,7 +51,7 @@
 #include "core/sbp/space.h"
 #include "problems/fields/terms.h"
 #include "scene/scene.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 namespace vivp::scene {
 
@@ -114,7 +114,7 @@ struct FieldScene {
   bool Wants(const std::string& diagnostic) const;
   sbp::SpaceDerivative<double> Space() const;
   // The ends' data for the solver (constant in time).
-  fields::FieldBoundary Boundary() const;
+  spacetime::FieldBoundary Boundary() const;
   // The density of the terms, for components() = M.
   template <int M>
   fields::ComposedDensity<M> Density() const {

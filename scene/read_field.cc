@@ -6,7 +6,7 @@
 #include "scene/field_sections.h"
 #include "scene/sections.h"
 #include "scene/text.h"
-#include "solvers/fields/composed.h"
+#include "solvers/spacetime/composed.h"
 
 namespace vivp::scene::detail {
 
@@ -205,11 +205,11 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
            "expected end > 0 (a field scene starts at t = 0)");
   const long long slice = s.space_points * s.components;
   const long long minimum = sbp::Table(s.method.op).min_points;
-  const fields::WindowLinearSolver linear =
+  const spacetime::WindowLinearSolver linear =
       s.method.linear_solver == "sparse-lu"
-          ? fields::WindowLinearSolver::kSparseLu
-          : fields::WindowLinearSolver::kModes;
-  const long long most = fields::MaxSolvedAtOnce(s.method.op, linear);
+          ? spacetime::WindowLinearSolver::kSparseLu
+          : spacetime::WindowLinearSolver::kModes;
+  const long long most = spacetime::MaxSolvedAtOnce(s.method.op, linear);
   if (s.method.tolerance.enabled()) {
     // Error control chooses the time grid: no points, windows of 16 unless
     // given.

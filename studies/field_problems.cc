@@ -10,7 +10,7 @@
 
 #include "problems/fields/exact.h"
 #include "problems/fields/profiles.h"
-#include "solvers/fields/composed.h"
+#include "solvers/spacetime/composed.h"
 
 namespace vivp::studies {
 
@@ -83,7 +83,7 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
   const auto dx = FieldSpace(p, o.space_order, nx);
   std::vector<double> phi(dx.points()), pi(dx.points());
   for (int j = 0; j < dx.points(); ++j) p.exact(0.0, dx.x(j), &phi[j], &pi[j]);
-  const fields::FieldGrid grid{.op = o.op,
+  const spacetime::FieldGrid grid{.op = o.op,
                                .points = nt,
                                .t_end = o.t_end,
                                .window_points = o.window_points};
@@ -94,9 +94,9 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
   r.dt = o.t_end / double(nt);
   r.dt_true = o.t_end / double(nt - 1);
   const fields::ComposedDensity<1> density{p.terms};
-  fields::FieldSolution s;
+  spacetime::FieldSolution s;
   try {
-    s = fields::SolveField(density, dx, grid, phi, pi);
+    s = spacetime::SolveField(density, dx, grid, phi, pi);
   } catch (const std::invalid_argument&) {
     throw;
   } catch (const std::exception& e) {
@@ -179,11 +179,11 @@ FieldConvergenceStudy RunFieldConvergence(const FieldProblem& p,
       (void)sbp::MakeOperator<double>(o.op, nt, 0.0, o.t_end);
       const long long at_once =
           (o.window_points > 0 ? std::min(o.window_points, nt) : nt) * nx;
-      if (at_once > fields::MaxSolvedAtOnce(o.op))
+      if (at_once > spacetime::MaxSolvedAtOnce(o.op))
         throw std::invalid_argument(
             std::to_string(at_once) + " values solved at once (" +
             std::to_string(nt) + " × " + std::to_string(nx) + ") exceed the " +
-            std::to_string(fields::MaxSolvedAtOnce(o.op)) + " of " + o.op +
+            std::to_string(spacetime::MaxSolvedAtOnce(o.op)) + " of " + o.op +
             "; march in windows (window_points = 16)");
     }
   for (long long nx : o.space_points)
@@ -209,11 +209,11 @@ FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
         List(o.space_points));
   const auto dx = FieldSpace(p, o.space_order, o.space_points[0]);
   const long long window = o.window_points > 0 ? o.window_points : 16;
-  if (window * dx.points() > fields::MaxSolvedAtOnce(o.op))
+  if (window * dx.points() > spacetime::MaxSolvedAtOnce(o.op))
     throw std::invalid_argument(
         "windows of " + std::to_string(window) + " × " +
         std::to_string(dx.points()) + " values exceed the " +
-        std::to_string(fields::MaxSolvedAtOnce(o.op)) + " solved at once");
+        std::to_string(spacetime::MaxSolvedAtOnce(o.op)) + " solved at once");
   for (double tol : tolerances)
     if (!(tol > 0 && tol < 1))
       throw std::invalid_argument("a tolerance must lie in (0, 1), got " +
@@ -223,17 +223,17 @@ FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
   const fields::ComposedDensity<1> density{p.terms};
   FieldConvergenceStudy study;
   for (double tol : tolerances) {
-    fields::FieldSolveOptions options;
+    spacetime::FieldSolveOptions options;
     options.tolerance = {tol, tol};
-    const fields::FieldGrid grid{
+    const spacetime::FieldGrid grid{
         .op = o.op, .points = 0, .t_end = o.t_end, .window_points = window};
     FieldConvergenceRow r;
     r.tolerance = tol;
     r.space_points = dx.points();
     r.dx = dx.dx();
-    fields::FieldSolution s;
+    spacetime::FieldSolution s;
     try {
-      s = fields::SolveField(density, dx, grid, phi, pi, options);
+      s = spacetime::SolveField(density, dx, grid, phi, pi, options);
     } catch (const std::invalid_argument&) {
       throw;
     } catch (const std::exception& e) {

@@ -10,8 +10,8 @@
 #include "core/sbp/space.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/method_of_lines.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/method_of_lines.h"
+#include "solvers/spacetime/solve.h"
 #include "solvers/variational/resolution.h"
 
 namespace vivp::studies {
@@ -47,8 +47,8 @@ Problem MakeProblem(const FieldWorkOptions& o, int nx) {
       Space::Periodic(8, nx, -o.half_length, 2 * o.half_length), {}, {}, 0};
   std::tie(p.phi0, p.pi0) =
       fields::InitialData(fields::SineGordonBreather{o.omega}, p.dx);
-  p.omega_max = fields::FastestFieldFrequency(
-      fields::SineGordon{}, p.dx, fields::SpectralRadius(p.dx), p.phi0, p.pi0);
+  p.omega_max = spacetime::FastestFieldFrequency(
+      fields::SineGordon{}, p.dx, spacetime::SpectralRadius(p.dx), p.phi0, p.pi0);
   return p;
 }
 
@@ -151,23 +151,23 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
   auto floor_of = [&](int nx) {
     if (floors.count(nx)) return floors[nx];
     const auto& p = problem(nx);
-    fields::MolOptions m{.method = "gauss6",
+    spacetime::MolOptions m{.method = "gauss6",
                          .steps = RoundUp8(o.t_end * p.omega_max * 4)};
     m.output_every = m.steps / 8;
     const auto s =
-        fields::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
+        spacetime::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
     return floors[nx] = s.status.converged
                             ? SampledError(s, p.dx, o.t_end, o.omega)
                             : INFINITY;
   };
   auto mol = [&](const Problem& p, const std::string& method, long long steps,
                  double tol) {
-    fields::MolOptions m{.method = method,
+    spacetime::MolOptions m{.method = method,
                          .steps = steps,
                          .tolerance = tol,
                          .output_every = steps / 8};
     const auto s =
-        fields::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
+        spacetime::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
     FieldWorkRun r{method,
                    method == "dopri5" ? "tolerance" : "fixed step",
                    p.dx.points(),
@@ -191,11 +191,11 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
     variational.push_back(
         {std::string(c->name), std::max<long long>(8, c->min_points)});
   auto var = [&](const Problem& p, const Variational& v, long long steps) {
-    fields::FieldGrid g{.op = v.op,
+    spacetime::FieldGrid g{.op = v.op,
                         .points = steps + 1,
                         .t_end = o.t_end,
                         .window_points = v.window};
-    const auto s = fields::SolveField(density, p.dx, g, p.phi0, p.pi0);
+    const auto s = spacetime::SolveField(density, p.dx, g, p.phi0, p.pi0);
     FieldWorkRun r{"variational",
                    v.op + ", windows of " + std::to_string(v.window),
                    p.dx.points(),

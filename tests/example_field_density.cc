@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/sbp/space.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 // --- example ---
 // ℒ = ½φ_t² − ½φ_x² − ½(φ² − 1)², the φ⁴ field, for any scalar type T.
@@ -21,7 +21,7 @@ struct Phi4Density {
 
 // A kink moving at v = 0.3 on [−20, 20]: SBP42 in space (natural boundary
 // condition) and in time, 161 time points to t = 4, windows of 16.
-vivp::fields::FieldSolution MovingKink(double v = 0.3) {
+vivp::spacetime::FieldSolution MovingKink(double v = 0.3) {
   auto dx = vivp::sbp::SpaceDerivative<double>::Bounded("sbp42", 201, -20, 20);
   const double g = 1 / std::sqrt(1 - v * v);
   std::vector<double> phi0, pi0;
@@ -29,7 +29,7 @@ vivp::fields::FieldSolution MovingKink(double v = 0.3) {
     phi0.push_back(std::tanh(g * dx.x(j)));
     pi0.push_back(-g * v / std::pow(std::cosh(g * dx.x(j)), 2));
   }
-  return vivp::fields::SolveField(Phi4Density{}, dx, {"sbp42", 161, 4.0, 16},
+  return vivp::spacetime::SolveField(Phi4Density{}, dx, {"sbp42", 161, 4.0, 16},
                                   phi0, pi0);
 }
 // --- end of example ---

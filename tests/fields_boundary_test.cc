@@ -14,7 +14,7 @@
 #include "core/action/field_boundary.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 #include "tests/fields_helpers.h"
 
 using namespace vivp;
@@ -37,7 +37,7 @@ BOOST_AUTO_TEST_CASE(dirichlet_and_neumann_data_by_multipliers) {
   for (const BoundaryKind kind :
        {BoundaryKind::kDirichlet, BoundaryKind::kNeumann}) {
     const bool dirichlet = kind == BoundaryKind::kDirichlet;
-    fields::FieldSolveOptions options;
+    spacetime::FieldSolveOptions options;
     options.boundary.left = {kind, [&](double t, int) {
                                return dirichlet ? kink(t, -4.0)
                                                 : slope(t, -4.0);
@@ -93,11 +93,11 @@ BOOST_AUTO_TEST_CASE(boundary_data_are_refused_with_their_reason) {
   // None on the circle, finite, and Neumann data only for a
   // flux that depends on φ_x alone.
   using action::BoundaryKind;
-  fields::FieldSolveOptions dirichlet;
+  spacetime::FieldSolveOptions dirichlet;
   dirichlet.boundary.left = {BoundaryKind::kDirichlet, {}};
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, ok, dirichlet);
+        spacetime::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, ok, dirichlet);
       },
       "a dirichlet boundary needs an interval"));
   const auto interval = SpaceDerivative<double>::Bounded("sbp21", 8, 0, 1);
@@ -105,15 +105,15 @@ BOOST_AUTO_TEST_CASE(boundary_data_are_refused_with_their_reason) {
                               [](double t, int) { return 1 / (t - 0.5); }};
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok, ok,
+        spacetime::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok, ok,
                            dirichlet);
       },
       "right dirichlet data: non-finite value at t = 0.5"));
-  fields::FieldSolveOptions neumann;
+  spacetime::FieldSolveOptions neumann;
   neumann.boundary.left = {BoundaryKind::kNeumann, {}};
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(Stiffening{}, interval, {"sbp21", 9, 1.0, 0}, ok, ok,
+        spacetime::SolveField(Stiffening{}, interval, {"sbp21", 9, 1.0, 0}, ok, ok,
                            neumann);
       },
       "flux ∂L/∂φ_x depends on φ_x alone"));

@@ -13,30 +13,31 @@
 #include "core/linalg/fit.h"
 #include "core/sbp/space.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 
 namespace fields_test {
 
 using vivp::sbp::SpaceDerivative;
 namespace fields = vivp::fields;
+namespace spacetime = vivp::spacetime;
 namespace linalg = vivp::linalg;
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 template <class U>
-fields::FieldSolution Solve(const auto& density, const U& u,
+spacetime::FieldSolution Solve(const auto& density, const U& u,
                             const SpaceDerivative<double>& dx,
-                            fields::FieldGrid grid,
-                            const fields::FieldSolveOptions& options = {}) {
+                            spacetime::FieldGrid grid,
+                            const spacetime::FieldSolveOptions& options = {}) {
   auto [phi, pi] = fields::InitialData(u, dx);
-  auto s = fields::SolveField(density, dx, grid, phi, pi, options);
+  auto s = spacetime::SolveField(density, dx, grid, phi, pi, options);
   BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
   return s;
 }
 
 // max_j |φ(T, x_j) − u(T, x_j)| of the last node and of the corrected end.
 template <class U>
-std::pair<double, double> EndErrors(const fields::FieldSolution& s, const U& u,
+std::pair<double, double> EndErrors(const spacetime::FieldSolution& s, const U& u,
                                     const SpaceDerivative<double>& dx,
                                     double t_end) {
   double node = 0, corrected = 0;
@@ -50,7 +51,7 @@ std::pair<double, double> EndErrors(const fields::FieldSolution& s, const U& u,
 
 // max over every kept slice and point of |φ − u|.
 template <class U>
-double MaxError(const fields::FieldSolution& s, const U& u,
+double MaxError(const spacetime::FieldSolution& s, const U& u,
                 const SpaceDerivative<double>& dx) {
   double e = 0;
   for (std::size_t k = 0; k < s.t.size(); ++k)

@@ -1,4 +1,4 @@
-// The space-diagonalized window solve (solvers/fields/mode_solver.h) against
+// The space-diagonalized window solve (solvers/spacetime/mode_solver.h) against
 // the sparse LU of the whole window: the same linear solves, and the same
 // marches over every density, boundary and time operator.
 #define BOOST_TEST_MODULE fields_modes
@@ -10,11 +10,11 @@
 
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
-#include "solvers/fields/assembly.h"
-#include "solvers/fields/density_blocks.h"
-#include "solvers/fields/mode_solver.h"
-#include "solvers/fields/solve.h"
-#include "solvers/fields/sparse_lu.h"
+#include "solvers/spacetime/assembly.h"
+#include "solvers/spacetime/density_blocks.h"
+#include "solvers/spacetime/mode_solver.h"
+#include "solvers/spacetime/solve.h"
+#include "solvers/spacetime/sparse_lu.h"
 #include "tests/fields_helpers.h"
 
 using namespace vivp;
@@ -75,9 +75,9 @@ double LinearSolveAgreement(const Density& density,
     y[k] = std::sin(1.7 * k + 0.2);
     b[k] = std::cos(0.9 * k * k + 0.1);
   }
-  fields::PatternedMatrix jac;
+  spacetime::PatternedMatrix jac;
   jac.Assemble(n, [&](auto& sink) { sys.Jacobian(y.data(), sink); });
-  fields::SparseLu lu;
+  spacetime::SparseLu lu;
   lu.Analyze(jac.matrix());
   BOOST_REQUIRE(lu.Factorize(jac.matrix()));
   lu.Solve(b, x);
@@ -87,11 +87,11 @@ double LinearSolveAgreement(const Density& density,
   lu.Solve(b - jac.matrix() * x, dxr);
   x += dxr;
   const bool dirichlet[2] = {left, right};
-  auto modes = std::make_shared<const fields::SpatialModes>(
+  auto modes = std::make_shared<const spacetime::SpatialModes>(
       dx, left ? 1 : 0, nx - int(left) - int(right));
-  fields::ModeSolver solver(dt, dx, m, dirichlet, modes);
+  spacetime::ModeSolver solver(dt, dx, m, dirichlet, modes);
   const double z[3 * m] = {};
-  BOOST_REQUIRE(solver.Factor(fields::BlocksAt(density, z)));
+  BOOST_REQUIRE(solver.Factor(spacetime::BlocksAt(density, z)));
   Eigen::VectorXd x2 = b;
   solver.Solve(x2.data());
   Eigen::VectorXd r2 = b - jac.matrix() * x2;
@@ -171,7 +171,7 @@ double MarchAgreement(const Density& density, Ends ends, const char* op,
       phi0[j * m + a] = (1.0 + 0.3 * a) * std::exp(-x * x) + 0.1 * a;
       pi0[j * m + a] = 0.4 * x * std::exp(-x * x) * (a == 0 ? 1 : -1);
     }
-  fields::FieldSolveOptions o;
+  spacetime::FieldSolveOptions o;
   if (ends == Ends::kDirichlet || ends == Ends::kNeumann) {
     const BoundaryKind kind = ends == Ends::kDirichlet
                                   ? BoundaryKind::kDirichlet
@@ -189,12 +189,12 @@ double MarchAgreement(const Density& density, Ends ends, const char* op,
       };
     }
   }
-  const fields::FieldGrid grid{
+  const spacetime::FieldGrid grid{
       .op = op, .points = 41, .t_end = 0.8, .window_points = 16};
-  o.linear = fields::WindowLinearSolver::kSparseLu;
-  const auto lu = fields::SolveField(density, dx, grid, phi0, pi0, o);
-  o.linear = fields::WindowLinearSolver::kModes;
-  const auto modes = fields::SolveField(density, dx, grid, phi0, pi0, o);
+  o.linear = spacetime::WindowLinearSolver::kSparseLu;
+  const auto lu = spacetime::SolveField(density, dx, grid, phi0, pi0, o);
+  o.linear = spacetime::WindowLinearSolver::kModes;
+  const auto modes = spacetime::SolveField(density, dx, grid, phi0, pi0, o);
   BOOST_REQUIRE_MESSAGE(lu.status.converged, lu.status.reason);
   BOOST_REQUIRE_MESSAGE(modes.status.converged, modes.status.reason);
   BOOST_REQUIRE(lu.phi.size() == modes.phi.size());

@@ -1,4 +1,4 @@
-// Fields solved from their action (solvers/fields), accuracy and
+// Fields solved from their action (solvers/spacetime), accuracy and
 // robustness: fitted orders in Δt and Δx, the sine-Gordon breather and kink
 // against their exact solutions, marching, the resolution check and bad
 // input.
@@ -16,8 +16,8 @@
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/method_of_lines.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/method_of_lines.h"
+#include "solvers/spacetime/solve.h"
 #include "tests/fields_helpers.h"
 
 using namespace vivp;
@@ -122,7 +122,7 @@ BOOST_AUTO_TEST_CASE(bounded_space_orders_are_reported) {
 // the exact solution's own tail deficit.
 BOOST_AUTO_TEST_CASE(sine_gordon_breather_and_kink_match_exact) {
   const fields::SineGordon sg;
-  const fields::FieldGrid grid{"sbp42", 101, 2.0, 16};
+  const spacetime::FieldGrid grid{"sbp42", 101, 2.0, 16};
   {
     const fields::SineGordonBreather breather{0.5};
     const auto dx = SpaceDerivative<double>::Periodic(8, 200, -20.0, 40.0);
@@ -155,7 +155,7 @@ BOOST_AUTO_TEST_CASE(sine_gordon_breather_and_kink_match_exact) {
   }
 }
 
-// The Courant-like limit (solvers/fields/resolution.h): Klein–Gordon with
+// The Courant-like limit (solvers/spacetime/resolution.h): Klein–Gordon with
 // only its fastest spatial mode excited is that mode's harmonic oscillator,
 // solved globally on 400 time points with the point-mechanics criterion
 // (tests/variational_resolution_test.cc): bounded (max|φ| < 1.5) at
@@ -167,8 +167,8 @@ BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
   const auto dx = SpaceDerivative<double>::Periodic(2, 16, 0.0, kTwoPi);
   std::vector<double> phi0(16), pi0(16, 0.0);
   for (int j = 0; j < 16; ++j) phi0[j] = std::cos(4 * dx.x(j));
-  const double omega = fields::FastestFieldFrequency(
-      kg, dx, fields::SpectralRadius(dx), phi0, pi0);
+  const double omega = spacetime::FastestFieldFrequency(
+      kg, dx, spacetime::SpectralRadius(dx), phi0, pi0);
   // The fastest mode of order-2 differences: sin θ/Δx at θ = π/2 (a period
   // of four points, cos 4x here), ω² = that² + m².
   BOOST_TEST(omega == std::sqrt(std::pow(1 / dx.dx(), 2) + 1.0),
@@ -187,7 +187,7 @@ BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
       std::vector<double> y(sys.size(), 0.0);
       for (int j = 0; j < 16; ++j)
         for (int i = 0; i < 400; ++i) y[sys.Phi(i, j, 0)] = phi0[j];
-      fields::SparseLuSolver lu;
+      spacetime::SparseLuSolver lu;
       BOOST_REQUIRE(variational::Newton<double>(sys, y, {}, lu).converged);
       double peak = 0;
       for (int j = 0; j < 16; ++j)
@@ -197,9 +197,9 @@ BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
                             << ": max|φ| = " << peak);
       const bool within = omega_dt <= limit;
       BOOST_TEST((peak < 1.5) == within);
-      fields::FieldSolveOptions options;
+      spacetime::FieldSolveOptions options;
       const auto s =
-          fields::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
+          spacetime::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
       // Refused before any window (a grid within the limit that is still
       // too coarse for the solution is rejected by the march's check 3
       // instead, after its window: here, 400 points for 139 periods).
@@ -256,27 +256,27 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_its_reason) {
   nan[3] = std::nan("");
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp42", 5, 1.0, 0}, ok, ok);
+        spacetime::SolveField(sg, dx, {"sbp42", 5, 1.0, 0}, ok, ok);
       },
       "sbp42 needs at least 8 time points, got 5"));
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp42", 9, 0.0, 0}, ok, ok);
+        spacetime::SolveField(sg, dx, {"sbp42", 9, 0.0, 0}, ok, ok);
       },
       "t_end must be positive"));
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, short_, ok);
+        spacetime::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, short_, ok);
       },
       "expected 8 values"));
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, nan);
+        spacetime::SolveField(sg, dx, {"sbp42", 9, 1.0, 0}, ok, nan);
       },
       "non-finite value at x = 0.375"));
   BOOST_TEST(Refused(
       [&] {
-        fields::SolveField(sg, dx, {"sbp99", 9, 1.0, 0}, ok, ok);
+        spacetime::SolveField(sg, dx, {"sbp99", 9, 1.0, 0}, ok, ok);
       },
       "unknown SBP operator 'sbp99'"));
 }
@@ -297,7 +297,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_orders_and_agreement) {
   const auto& pi0 = data.second;
   const double t_end = 2;
   auto mol = [&](const std::string& method, long long steps, double tol = 0) {
-    const auto s = fields::SolveFieldMol(
+    const auto s = spacetime::SolveFieldMol(
         sg, dx, t_end, phi0, pi0,
         {.method = method, .steps = steps, .tolerance = tol});
     BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
@@ -336,7 +336,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_orders_and_agreement) {
   std::vector<double> h, err;
   for (const int nt : {33, 65, 129}) {
     const auto s =
-        fields::SolveField(sg, dx, {"sbp42", nt, t_end, 0}, phi0, pi0);
+        spacetime::SolveField(sg, dx, {"sbp42", nt, t_end, 0}, phi0, pi0);
     BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
     h.push_back(t_end / (nt - 1));
     err.push_back(distance(s.end_phi_node));
@@ -370,17 +370,17 @@ BOOST_AUTO_TEST_CASE(method_of_lines_refuses_with_its_reason) {
   const auto dx = SpaceDerivative<double>::Periodic(8, 64, 0.0, kTwoPi);
   const auto [phi0, pi0] =
       fields::InitialData(fields::KleinGordonPlaneWave{kg, 1.0, 1.0}, dx);
-  const auto s = fields::SolveFieldMol(kg, dx, 1.0, phi0, pi0,
+  const auto s = spacetime::SolveFieldMol(kg, dx, 1.0, phi0, pi0,
                                        {.method = "leapfrog", .steps = 4});
   BOOST_TEST(!s.status.converged);
   BOOST_TEST(s.status.reason.find("use at least") != std::string::npos);
   BOOST_TEST(s.t.size() == 1u);  // nothing past t = 0
   BOOST_CHECK_EXCEPTION(
-      fields::SolveFieldMol(MovingFrame{}, dx, 1.0, phi0, pi0),
+      spacetime::SolveFieldMol(MovingFrame{}, dx, 1.0, phi0, pi0),
       std::invalid_argument, [](const std::invalid_argument& e) {
         return std::string(e.what()).find("constant M") != std::string::npos;
       });
   BOOST_CHECK_THROW(
-      fields::SolveFieldMol(kg, dx, 1.0, phi0, pi0, {.method = "rk45"}),
+      spacetime::SolveFieldMol(kg, dx, 1.0, phi0, pi0, {.method = "rk45"}),
       std::invalid_argument);
 }

@@ -1,5 +1,5 @@
 // Fields solved from their action (core/action/field_system.h,
-// solvers/fields), the structure of the solution: the Jacobian against
+// solvers/spacetime), the structure of the solution: the Jacobian against
 // differences of the residual, the reduced solution as the symmetric
 // critical point of the full doubled action, the Noether identities that
 // hold exactly and the energy's convergence.
@@ -20,7 +20,7 @@
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
-#include "solvers/fields/solve.h"
+#include "solvers/spacetime/solve.h"
 #include "tests/fields_helpers.h"
 
 using namespace vivp;
@@ -173,7 +173,7 @@ BOOST_AUTO_TEST_CASE(full_action_critical_point_is_symmetric) {
   }
   const action::FieldSystem<fields::SineGordon> reduced(sg, dt, dx, phi0, pi0);
   std::vector<double> y(reduced.size(), 0.0);
-  fields::SparseLuSolver lu;
+  spacetime::SparseLuSolver lu;
   BOOST_REQUIRE(variational::Newton<double>(reduced, y, {}, lu).converged);
 
   auto gradient = [&](const Eigen::VectorXd& u) {
@@ -253,7 +253,7 @@ BOOST_AUTO_TEST_CASE(noether_identities_hold_exactly) {
     }
     const action::FieldSystem<fields::Wave> sys(wave, dt, dx, phi0, pi0);
     std::vector<double> y;
-    fields::SparseLuSolver lu;
+    spacetime::SparseLuSolver lu;
     BOOST_REQUIRE(variational::Newton<double>(sys, y, {}, lu).converged);
     double end = 0, start = 0;
     for (int j = 0; j < 32; ++j) {
@@ -280,7 +280,7 @@ BOOST_AUTO_TEST_CASE(noether_identities_hold_exactly) {
     const action::FieldSystem<fields::ComplexPhi4> sys(field, dt, dx, phi0,
                                                        pi0);
     std::vector<double> y;
-    fields::SparseLuSolver lu;
+    spacetime::SparseLuSolver lu;
     BOOST_REQUIRE(variational::Newton<double>(sys, y, {}, lu).converged);
     action::FieldValues<double> v;
     sys.Fields(y.data(), v);

@@ -67,7 +67,7 @@ struct Measured {
   // The most values (time points × spatial points × components) that a field
   // scene or study solves at once by the sparse LU of the whole window (the
   // reference linear solver), in one global solve or one window; beyond it,
-  // march in windows (solvers/fields/composed.h). Set by the peak memory of
+  // march in windows (solvers/spacetime/composed.h). Set by the peak memory of
   // a global Klein–Gordon solve (docs/fields.md §8). The space-diagonalized
   // solve, which does not fill, has one bound for every operator there.
   long long field_values_at_once;

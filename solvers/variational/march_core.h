@@ -2,7 +2,7 @@
 // (window_solve.h), accepting it — its report, its nodes to the observer and
 // the trajectory, the hand-off — and reporting a failure with its window,
 // reason and residual. The same for a point-mechanics problem and a field:
-// the Window (point_window.h, solvers/fields/field_window.h) is what varies.
+// the Window (point_window.h, solvers/spacetime/field_window.h) is what varies.
 #pragma once
 
 #include <algorithm>

@@ -9,7 +9,7 @@
 // solver is the part that varies (a LinearSolver below): a banded LU for the
 // time nodes of point mechanics (BandedSolver, the default), a sparse LU or
 // a space-diagonalized solve for the space-time window of a field
-// (solvers/fields/window_solver.h).
+// (solvers/spacetime/window_solver.h).
 //
 // Each iteration assembles and factors the Jacobian once, then takes the
 // Newton step followed by up to `refinement_steps` further corrections with

@@ -4,7 +4,7 @@
 // window length (window_engine.h), or a solve of its own by full Newton or
 // Ceres Levenberg–Marquardt (a window is small enough for LM's normal
 // equations, docs/method.md §8). The field counterpart is
-// solvers/fields/field_window.h.
+// solvers/spacetime/field_window.h.
 #pragma once
 
 #include <algorithm>

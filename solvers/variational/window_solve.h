@@ -4,7 +4,7 @@
 // The same for every system a march solves: what varies is the Window,
 // which integrates the predictor and solves the window's equations —
 // point_window.h (reduced Newton with a banded LU, full Newton, Ceres LM)
-// or solvers/fields/field_window.h (a field's space-time window). A Window
+// or solvers/spacetime/field_window.h (a field's space-time window). A Window
 // provides
 //
 //   int dim() const;  int order() const;  const std::string& op() const;

@@ -24,9 +24,9 @@
 //   dopri5     Dormand–Prince 5(4) of Boost.Odeint, adaptive, absolute and
 //              relative tolerance `tolerance`.
 //
-//   vivp::fields::MolOptions o{.method = "gauss6", .steps = 200,
+//   vivp::spacetime::MolOptions o{.method = "gauss6", .steps = 200,
 //                              .output_every = 10};
-//   auto s = vivp::fields::SolveFieldMol(density, dx, 2.0, phi0, pi0, o);
+//   auto s = vivp::spacetime::SolveFieldMol(density, dx, 2.0, phi0, pi0, o);
 #pragma once
 
 #include <Eigen/Dense>
@@ -42,12 +42,12 @@
 
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/space.h"
-#include "solvers/fields/input.h"
-#include "solvers/fields/resolution.h"
+#include "solvers/spacetime/input.h"
+#include "solvers/spacetime/resolution.h"
 #include "solvers/steppers/tableau.h"
 #include "solvers/variational/summary.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 struct MolOptions {
   std::string method = "gauss6";  // leapfrog | gauss4 | gauss6 | dopri5
@@ -337,4 +337,4 @@ MolSolution SolveFieldMol(const Density& density,
   return finish(true, "converged");
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -38,7 +38,7 @@
 
 #include "core/sbp/space.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 class SpatialModes {
  public:
@@ -78,4 +78,4 @@ class SpatialModes {
   mutable Eigen::MatrixXd work_;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

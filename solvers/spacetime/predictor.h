@@ -23,10 +23,10 @@
 #include "core/action/field_boundary.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/space.h"
-#include "solvers/fields/method_of_lines.h"
+#include "solvers/spacetime/method_of_lines.h"
 #include "solvers/variational/predictor.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 template <class Density>
 class FieldPredictor {
@@ -161,4 +161,4 @@ class FieldPredictor {
   double step_ = 0;  // last accepted step, the next run's first
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

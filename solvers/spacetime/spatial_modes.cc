@@ -1,4 +1,4 @@
-#include "solvers/fields/spatial_modes.h"
+#include "solvers/spacetime/spatial_modes.h"
 
 #include <fftw3.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // FFTW's plans for one (stride, rows): a forward and a backward batch of
 // `rows` real transforms of length n, element stride `stride`, one row after
@@ -168,4 +168,4 @@ void SpatialModes::Inverse(double* data, int stride, int rows) const {
   x = work_;
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

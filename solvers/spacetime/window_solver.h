@@ -26,13 +26,13 @@
 #include <vector>
 
 #include "core/action/field_system.h"
-#include "solvers/fields/assembly.h"
-#include "solvers/fields/density_blocks.h"
-#include "solvers/fields/mode_solver.h"
-#include "solvers/fields/sparse_lu.h"
-#include "solvers/fields/spatial_modes.h"
+#include "solvers/spacetime/assembly.h"
+#include "solvers/spacetime/density_blocks.h"
+#include "solvers/spacetime/mode_solver.h"
+#include "solvers/spacetime/sparse_lu.h"
+#include "solvers/spacetime/spatial_modes.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // Which linear solver a field window uses.
 enum class WindowLinearSolver { kModes, kSparseLu };
@@ -204,4 +204,4 @@ class ModesSolver {
   action::FieldValues<double> values_;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

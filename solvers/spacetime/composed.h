@@ -10,10 +10,10 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/space.h"
 #include "problems/fields/terms.h"
-#include "solvers/fields/solve.h"
-#include "solvers/fields/window_solver.h"
+#include "solvers/spacetime/solve.h"
+#include "solvers/spacetime/window_solver.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // The most values (time points × spatial points × components) that a scene
 // or a study solves at once, in one global solve or one window; beyond it,
@@ -33,12 +33,12 @@ inline long long MaxSolvedAtOnce(
 }
 
 #define VIVP_FIELD_SOLVE(M)                                           \
-  template FieldSolution SolveField<ComposedDensity<M>>(              \
-      const ComposedDensity<M>&, const sbp::SpaceDerivative<double>&, \
+  template FieldSolution SolveField<fields::ComposedDensity<M>>(      \
+      const fields::ComposedDensity<M>&, const sbp::SpaceDerivative<double>&, \
       const FieldGrid&, std::vector<double>, std::vector<double>,     \
       const FieldSolveOptions&)
 
 extern VIVP_FIELD_SOLVE(1);
 extern VIVP_FIELD_SOLVE(2);
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

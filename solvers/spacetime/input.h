@@ -9,7 +9,7 @@
 
 #include "core/sbp/space.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // t_end positive and finite; φ(0) and φ_t(0) of m components at every
 // spatial point, all finite (a non-finite value is named by its x).
@@ -31,4 +31,4 @@ inline void CheckFieldInput(double t_end,
                                   std::to_string(dx.x(int(k / m))));
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -14,7 +14,7 @@
 #include "core/action/field_system.h"
 #include "solvers/variational/end_state.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 struct FieldEnd {
   std::vector<double> phi, phi_t;  // corrected, value j·m + a
@@ -82,4 +82,4 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
   return e;
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

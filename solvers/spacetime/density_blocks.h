@@ -13,9 +13,9 @@
 
 #include "core/action/field_system.h"
 #include "core/autodiff/pointwise.h"
-#include "solvers/fields/mode_solver.h"
+#include "solvers/spacetime/mode_solver.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 namespace detail {
 
@@ -84,4 +84,4 @@ DensityBlocks BlocksAt(const Density& density, const double* z) {
   return detail::BlocksOf<m>(autodiff::Hessian<double, 3 * m>(call, z).hessian);
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -4,13 +4,13 @@
 //
 //   vivp::fields::SineGordon density;
 //   auto dx = vivp::sbp::SpaceDerivative<double>::Periodic(8, 200, -20, 40);
-//   vivp::fields::FieldGrid grid{.op = "sbp42", .points = 201, .t_end = 2};
-//   auto s = vivp::fields::SolveField(density, dx, grid, phi0, pi0);
+//   vivp::spacetime::FieldGrid grid{.op = "sbp42", .points = 201, .t_end = 2};
+//   auto s = vivp::spacetime::SolveField(density, dx, grid, phi0, pi0);
 //   // s.phi: every kept slice, value (slice·Nx + j)·m + a
 //
 // On an interval the ends may carry data (core/action/field_boundary.h):
 //
-//   vivp::fields::FieldSolveOptions o;
+//   vivp::spacetime::FieldSolveOptions o;
 //   o.boundary.left = {vivp::action::BoundaryKind::kDirichlet,
 //                      [](double t, int) { return std::sin(t); }};
 //
@@ -43,17 +43,17 @@
 #include <vector>
 
 #include "core/sbp/builder.h"
-#include "solvers/fields/end_state.h"
-#include "solvers/fields/field_window.h"
-#include "solvers/fields/input.h"
-#include "solvers/fields/resolution.h"
+#include "solvers/spacetime/end_state.h"
+#include "solvers/spacetime/field_window.h"
+#include "solvers/spacetime/input.h"
+#include "solvers/spacetime/resolution.h"
 #include "solvers/variational/march_adaptive.h"
 #include "solvers/variational/march_uniform.h"
 #include "solvers/variational/resolution.h"
 #include "solvers/variational/step_control.h"
 #include "solvers/variational/summary.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 struct FieldGrid {
   std::string op = "sbp42";  // the time operator: sbp21, sbp42, sbp63, sbp84
@@ -293,4 +293,4 @@ FieldSolution SolveField(const Density& density,
   return s;
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 class PatternedMatrix {
  public:
@@ -62,4 +62,4 @@ class PatternedMatrix {
   int patterns_ = 0;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -20,7 +20,7 @@
 #include <string>
 #include <string_view>
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 enum class SparseSolver { kUmfpack, kEigen };
 
@@ -55,4 +55,4 @@ class SparseLu {
   std::string message_;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

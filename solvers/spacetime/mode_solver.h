@@ -40,10 +40,10 @@
 
 #include "core/linalg/banded.h"
 #include "core/sbp/regularized.h"
-#include "solvers/fields/spatial_modes.h"
+#include "solvers/spacetime/spatial_modes.h"
 #include "solvers/variational/banded_lu.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // The Hessian blocks a mode solve is built from, each m × m.
 struct DensityBlocks {
@@ -105,4 +105,4 @@ class ModeSolver {
   mutable std::vector<double> work_, saved_;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

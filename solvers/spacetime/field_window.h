@@ -23,16 +23,16 @@
 #include "core/action/field_system.h"
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
-#include "solvers/fields/end_state.h"
-#include "solvers/fields/predictor.h"
-#include "solvers/fields/resolution.h"
-#include "solvers/fields/window_solver.h"
+#include "solvers/spacetime/end_state.h"
+#include "solvers/spacetime/predictor.h"
+#include "solvers/spacetime/resolution.h"
+#include "solvers/spacetime/window_solver.h"
 #include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
 #include "solvers/variational/solve_ivp.h"
 #include "solvers/variational/window_checks.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // One end of an interval: the natural condition ∂L/∂φ_x = 0 of the discrete
 // action, or Dirichlet / Neumann data imposed by multipliers
@@ -370,4 +370,4 @@ class FieldWindow {
   FieldTimings timings_;
 };
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -1,11 +1,11 @@
-#include "solvers/fields/mode_solver.h"
+#include "solvers/spacetime/mode_solver.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 ModeSolver::ModeSolver(const sbp::RegularizedOperator<double>& dt,
                        const sbp::SpaceDerivative<double>& dx, int m,
@@ -278,4 +278,4 @@ void ModeSolver::Multipliers(double* b) const {
   }
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -30,7 +30,7 @@
 #include "core/linalg/small_eigen.h"
 #include "core/sbp/space.h"
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 // ρ(D_x): exact for periodic differences (the symbol's maximum over a fine
 // θ grid including the modes of the grid), by power iteration on
@@ -132,4 +132,4 @@ inline std::string UnderResolved(const std::string& op, double limit, double dt,
   return msg.str();
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime

@@ -1,10 +1,10 @@
-#include "solvers/fields/sparse_lu.h"
+#include "solvers/spacetime/sparse_lu.h"
 
 #include <Eigen/SparseLU>
 #include <Eigen/UmfPackSupport>
 #include <stdexcept>
 
-namespace vivp::fields {
+namespace vivp::spacetime {
 
 using Matrix = Eigen::SparseMatrix<double>;
 
@@ -100,4 +100,4 @@ long long SparseLu::FactorNonzeros() const {
   return -1;
 }
 
-}  // namespace vivp::fields
+}  // namespace vivp::spacetime
