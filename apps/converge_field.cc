@@ -80,12 +80,13 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
         so.window_points > 0 ? std::min(so.window_points, nt) : nt;
     for (long long nx : so.space_points)
       if (w * nx > spacetime::MaxSolvedAtOnce(so.op))
-        throw UsageError(
-            "--points " + std::to_string(nt) + " with --space-points " +
-            std::to_string(nx) + ": " + std::to_string(w * nx) +
-            " values solved at once exceed the " +
-            std::to_string(spacetime::MaxSolvedAtOnce(so.op)) + " allowed for " +
-            so.op + "; march in windows with --slab-points 16");
+        throw UsageError("--points " + std::to_string(nt) +
+                         " with --space-points " + std::to_string(nx) + ": " +
+                         std::to_string(w * nx) +
+                         " values solved at once exceed the " +
+                         std::to_string(spacetime::MaxSolvedAtOnce(so.op)) +
+                         " allowed for " + so.op +
+                         "; march in windows with --slab-points 16");
   }
   return so;
 }

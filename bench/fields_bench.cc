@@ -158,9 +158,9 @@ void Table0() {
     spacetime::FieldSolveOptions o;
     o.linear = linear;
     const spacetime::FieldGrid grid{.op = "sbp42",
-                                 .points = 1201,
-                                 .t_end = 2 * std::numbers::pi / omega,
-                                 .window_points = 16};
+                                    .points = 1201,
+                                    .t_end = 2 * std::numbers::pi / omega,
+                                    .window_points = 16};
     const auto r = spacetime::SolveField(sg, dx, grid, phi0, pi0, o);
     const double known = r.seconds_residual + r.seconds_assembly +
                          r.seconds_factor + r.seconds_solve + r.seconds_setup +
@@ -284,8 +284,8 @@ void Table2() {
       long long factorizations = 0;
       double seconds = 0;
       if (std::string(c.method) == "sbp42") {
-        auto s = spacetime::SolveField(sg, dx, {"sbp42", c.steps + 1, 100.0, 16},
-                                    phi0, pi0);
+        auto s = spacetime::SolveField(
+            sg, dx, {"sbp42", c.steps + 1, 100.0, 16}, phi0, pi0);
         t = std::move(s.t), phi = std::move(s.phi);
         phi_t = std::move(s.phi_t);
         converged = s.status.converged, message = s.status.reason,

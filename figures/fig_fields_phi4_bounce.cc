@@ -133,8 +133,8 @@ Outcome Collide(double v, const Grid& g) {
   const Pair pair{{kPhi4, v, -kX0}, {kPhi4, -v, kX0}};
   const auto [phi0, pi0] = fields::InitialData(pair, dx);
   const long long nt = std::llround(g.t_end / g.dt) + 1;
-  const auto s = spacetime::SolveField(kPhi4, dx, {"sbp42", nt, g.t_end, g.window},
-                                    phi0, pi0);
+  const auto s = spacetime::SolveField(
+      kPhi4, dx, {"sbp42", nt, g.t_end, g.window}, phi0, pi0);
   if (!s.status.converged) throw std::runtime_error(s.status.reason);
   Outcome o;
   o.v = v;

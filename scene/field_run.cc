@@ -44,9 +44,9 @@ FieldRun Run(const FieldScene& s,
                        ? spacetime::WindowLinearSolver::kSparseLu
                        : spacetime::WindowLinearSolver::kModes;
   const spacetime::FieldGrid grid{.op = s.method.op,
-                               .points = s.time_points,
-                               .t_end = s.t_end,
-                               .window_points = s.method.window_points};
+                                  .points = s.time_points,
+                                  .t_end = s.t_end,
+                                  .window_points = s.method.window_points};
   run.solution =
       spacetime::SolveField(density, dx, grid, s.phi0, s.phi_t0, options);
   const auto& sol = run.solution;

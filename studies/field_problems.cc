@@ -84,9 +84,9 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
   std::vector<double> phi(dx.points()), pi(dx.points());
   for (int j = 0; j < dx.points(); ++j) p.exact(0.0, dx.x(j), &phi[j], &pi[j]);
   const spacetime::FieldGrid grid{.op = o.op,
-                               .points = nt,
-                               .t_end = o.t_end,
-                               .window_points = o.window_points};
+                                  .points = nt,
+                                  .t_end = o.t_end,
+                                  .window_points = o.window_points};
   FieldConvergenceRow r;
   r.points = nt;
   r.space_points = nx;

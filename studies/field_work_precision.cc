@@ -48,7 +48,8 @@ Problem MakeProblem(const FieldWorkOptions& o, int nx) {
   std::tie(p.phi0, p.pi0) =
       fields::InitialData(fields::SineGordonBreather{o.omega}, p.dx);
   p.omega_max = spacetime::FastestFieldFrequency(
-      fields::SineGordon{}, p.dx, spacetime::SpectralRadius(p.dx), p.phi0, p.pi0);
+      fields::SineGordon{}, p.dx, spacetime::SpectralRadius(p.dx), p.phi0,
+      p.pi0);
   return p;
 }
 
@@ -152,7 +153,7 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
     if (floors.count(nx)) return floors[nx];
     const auto& p = problem(nx);
     spacetime::MolOptions m{.method = "gauss6",
-                         .steps = RoundUp8(o.t_end * p.omega_max * 4)};
+                            .steps = RoundUp8(o.t_end * p.omega_max * 4)};
     m.output_every = m.steps / 8;
     const auto s =
         spacetime::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
@@ -163,9 +164,9 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
   auto mol = [&](const Problem& p, const std::string& method, long long steps,
                  double tol) {
     spacetime::MolOptions m{.method = method,
-                         .steps = steps,
-                         .tolerance = tol,
-                         .output_every = steps / 8};
+                            .steps = steps,
+                            .tolerance = tol,
+                            .output_every = steps / 8};
     const auto s =
         spacetime::SolveFieldMol(density, p.dx, o.t_end, p.phi0, p.pi0, m);
     FieldWorkRun r{method,
@@ -192,9 +193,9 @@ FieldWorkReport BreatherWorkPrecision(const FieldWorkOptions& o,
         {std::string(c->name), std::max<long long>(8, c->min_points)});
   auto var = [&](const Problem& p, const Variational& v, long long steps) {
     spacetime::FieldGrid g{.op = v.op,
-                        .points = steps + 1,
-                        .t_end = o.t_end,
-                        .window_points = v.window};
+                           .points = steps + 1,
+                           .t_end = o.t_end,
+                           .window_points = v.window};
     const auto s = spacetime::SolveField(density, p.dx, g, p.phi0, p.pi0);
     FieldWorkRun r{"variational",
                    v.op + ", windows of " + std::to_string(v.window),

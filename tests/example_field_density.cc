@@ -30,7 +30,7 @@ vivp::spacetime::FieldSolution MovingKink(double v = 0.3) {
     pi0.push_back(-g * v / std::pow(std::cosh(g * dx.x(j)), 2));
   }
   return vivp::spacetime::SolveField(Phi4Density{}, dx, {"sbp42", 161, 4.0, 16},
-                                  phi0, pi0);
+                                     phi0, pi0);
 }
 // --- end of example ---
 

@@ -106,15 +106,15 @@ BOOST_AUTO_TEST_CASE(boundary_data_are_refused_with_their_reason) {
   BOOST_TEST(Refused(
       [&] {
         spacetime::SolveField(sg, interval, {"sbp21", 3, 1.0, 0}, ok, ok,
-                           dirichlet);
+                              dirichlet);
       },
       "right dirichlet data: non-finite value at t = 0.5"));
   spacetime::FieldSolveOptions neumann;
   neumann.boundary.left = {BoundaryKind::kNeumann, {}};
   BOOST_TEST(Refused(
       [&] {
-        spacetime::SolveField(Stiffening{}, interval, {"sbp21", 9, 1.0, 0}, ok, ok,
-                           neumann);
+        spacetime::SolveField(Stiffening{}, interval, {"sbp21", 9, 1.0, 0}, ok,
+                              ok, neumann);
       },
       "flux ∂L/∂φ_x depends on φ_x alone"));
 }

@@ -25,10 +25,10 @@ namespace linalg = vivp::linalg;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
 template <class U>
-spacetime::FieldSolution Solve(const auto& density, const U& u,
-                            const SpaceDerivative<double>& dx,
-                            spacetime::FieldGrid grid,
-                            const spacetime::FieldSolveOptions& options = {}) {
+spacetime::FieldSolution Solve(
+    const auto& density, const U& u, const SpaceDerivative<double>& dx,
+    spacetime::FieldGrid grid,
+    const spacetime::FieldSolveOptions& options = {}) {
   auto [phi, pi] = fields::InitialData(u, dx);
   auto s = spacetime::SolveField(density, dx, grid, phi, pi, options);
   BOOST_REQUIRE_MESSAGE(s.status.converged, s.status.reason);
@@ -37,7 +37,8 @@ spacetime::FieldSolution Solve(const auto& density, const U& u,
 
 // max_j |φ(T, x_j) − u(T, x_j)| of the last node and of the corrected end.
 template <class U>
-std::pair<double, double> EndErrors(const spacetime::FieldSolution& s, const U& u,
+std::pair<double, double> EndErrors(const spacetime::FieldSolution& s,
+                                    const U& u,
                                     const SpaceDerivative<double>& dx,
                                     double t_end) {
   double node = 0, corrected = 0;

@@ -198,8 +198,8 @@ BOOST_AUTO_TEST_CASE(resolution_limit_is_the_modes) {
       const bool within = omega_dt <= limit;
       BOOST_TEST((peak < 1.5) == within);
       spacetime::FieldSolveOptions options;
-      const auto s =
-          spacetime::SolveField(kg, dx, {op, 400, t_end, 0}, phi0, pi0, options);
+      const auto s = spacetime::SolveField(kg, dx, {op, 400, t_end, 0}, phi0,
+                                           pi0, options);
       // Refused before any window (a grid within the limit that is still
       // too coarse for the solution is rejected by the march's check 3
       // instead, after its window: here, 400 points for 139 periods).
@@ -371,7 +371,7 @@ BOOST_AUTO_TEST_CASE(method_of_lines_refuses_with_its_reason) {
   const auto [phi0, pi0] =
       fields::InitialData(fields::KleinGordonPlaneWave{kg, 1.0, 1.0}, dx);
   const auto s = spacetime::SolveFieldMol(kg, dx, 1.0, phi0, pi0,
-                                       {.method = "leapfrog", .steps = 4});
+                                          {.method = "leapfrog", .steps = 4});
   BOOST_TEST(!s.status.converged);
   BOOST_TEST(s.status.reason.find("use at least") != std::string::npos);
   BOOST_TEST(s.t.size() == 1u);  // nothing past t = 0

@@ -32,10 +32,10 @@ inline long long MaxSolvedAtOnce(
   return sbp::Table(op).measured.field_values_at_once;
 }
 
-#define VIVP_FIELD_SOLVE(M)                                           \
-  template FieldSolution SolveField<fields::ComposedDensity<M>>(      \
+#define VIVP_FIELD_SOLVE(M)                                                   \
+  template FieldSolution SolveField<fields::ComposedDensity<M>>(              \
       const fields::ComposedDensity<M>&, const sbp::SpaceDerivative<double>&, \
-      const FieldGrid&, std::vector<double>, std::vector<double>,     \
+      const FieldGrid&, std::vector<double>, std::vector<double>,             \
       const FieldSolveOptions&)
 
 extern VIVP_FIELD_SOLVE(1);

@@ -98,8 +98,9 @@ class WindowSolver {
     std::string why = CheckFinite(a, order);
     WindowFailure failure = WindowFailure::kNewton;
     if (why.empty()) {
-      why = CheckConsistent(a, pr, pend_x, pend_v, order,
-                            sbp::Table(window_.op()).measured.position_estimate);
+      why =
+          CheckConsistent(a, pr, pend_x, pend_v, order,
+                          sbp::Table(window_.op()).measured.position_estimate);
       failure = WindowFailure::kCheck;
     }
     if (why.empty() && uniform) {
