@@ -58,19 +58,29 @@ nlohmann::json OrdersJson(const studies::ConvergenceOrders& o) {
 }
 
 nlohmann::json ConvergenceRowJson(const studies::ConvergenceRow& r) {
-  return {{"points", r.points},
-          {"dt", r.dt},
-          {"dt_true", r.dt_true},
-          {"err_x", JsonNumber(r.err_x)},
-          {"err_v", JsonNumber(r.err_v)},
-          {"err_x_corrected", JsonNumber(r.err_x_corrected)},
-          {"err_p_corrected", JsonNumber(r.err_p_corrected)},
-          {"error_estimate", JsonNumber(r.error_estimate)},
-          {"iterations", r.iterations},
-          {"fallbacks", r.fallbacks},
-          {"seconds", r.seconds},
-          {"converged", r.converged},
-          {"status", r.reason}};
+  nlohmann::json row = {{"points", r.points},
+                        {"dt", r.dt},
+                        {"dt_true", r.dt_true},
+                        {"err_x", JsonNumber(r.err_x)},
+                        {"err_v", JsonNumber(r.err_v)},
+                        {"err_x_corrected", JsonNumber(r.err_x_corrected)},
+                        {"err_p_corrected", JsonNumber(r.err_p_corrected)},
+                        {"error_estimate", JsonNumber(r.error_estimate)},
+                        {"iterations", r.iterations},
+                        {"fallbacks", r.fallbacks},
+                        {"seconds", r.seconds},
+                        {"converged", r.converged},
+                        {"status", r.reason}};
+  // A march under error control: its tolerance, the largest errors over
+  // every returned node, its windows and the rejected ones.
+  if (std::isfinite(r.tolerance)) {
+    row["tolerance"] = r.tolerance;
+    row["max_error"] = JsonNumber(r.max_error);
+    row["max_error_v"] = JsonNumber(r.max_error_v);
+    row["windows"] = r.windows;
+    row["rejected"] = r.rejected;
+  }
+  return row;
 }
 
 std::vector<long long> ParsePoints(const std::string& list,

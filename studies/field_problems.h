@@ -45,10 +45,9 @@ const FieldProblem& FindFieldProblem(const std::string& name);
 sbp::SpaceDerivative<double> FieldSpace(const FieldProblem& problem, int order,
                                         long long nx);
 
-struct FieldConvergenceRow : ConvergenceRow {
+struct FieldConvergenceRow : ConvergenceRow {  // windows: the march's
   long long space_points = 0;
   double dx = 0;
-  int windows = 0;
 };
 
 struct FieldStudyOptions {

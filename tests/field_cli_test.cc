@@ -277,3 +277,86 @@ BOOST_AUTO_TEST_CASE(ConvergeField_RefusesBadOptionsByName) {
           {"--space-order: expected 2, 4, 6 or 8, got 5"});
   BOOST_TEST(!fs::exists(json));
 }
+
+// A field scene under error control: `[method] tolerance` chooses the
+// steps (no `[time] points`), and `linear_solver` picks the window's linear
+// solve; both solves give the same field (the sparse LU is the reference).
+BOOST_AUTO_TEST_CASE(Tolerance_ChoosesTheStepsWithEitherLinearSolver) {
+  Scratch s;
+  auto scene = [](const std::string& linear) {
+    return KleinGordon("6.283185307179586", "profile = \"plane_wave\"\n",
+                       "points = 32\n", "") +
+           "[method]\ntolerance = 1e-6\nlinear_solver = \"" + linear + "\"\n";
+  };
+  // KleinGordon() already has a [method] table: merge the keys into it.
+  auto merged = [&](const std::string& linear) {
+    std::string t = scene(linear);
+    const auto second = t.rfind("[method]\n");
+    t.erase(second, std::string("[method]\n").size());
+    const auto first = t.find("[method]\n") + std::string("[method]\n").size();
+    const auto keys = t.substr(t.find("tolerance = "));
+    t.erase(t.find("tolerance = "));
+    return t.insert(first, keys);
+  };
+  nlohmann::json j[2];
+  std::string csv[2];
+  const char* solvers[2] = {"modes", "sparse-lu"};
+  for (int i = 0; i < 2; ++i) {
+    const Run r = s.RunScene(solvers[i], merged(solvers[i]));
+    BOOST_TEST_REQUIRE(r.status == 0, r.err);
+    BOOST_TEST(r.out.find("under error control") != std::string::npos);
+    const fs::path out = s.dir / (std::string(solvers[i]) + ".out");
+    j[i] = nlohmann::json::parse(Slurp(out / "summary.json"));
+    csv[i] = Slurp(out / "field.csv");
+    BOOST_TEST(j[i]["solver"]["linear_solver"].get<std::string>() ==
+               solvers[i]);
+    BOOST_TEST(j[i]["solver"]["unchecked"].get<std::string>().empty());
+    // Measured: largest error of φ over the slices 1e-9 (the spatial error
+    // of 32 points is 4e-7 in φ_t).
+    BOOST_TEST(j[i]["diagnostics"]["error"]["max"].get<double>() < 1e-6);
+  }
+  BOOST_TEST(j[0]["solver"]["mode_factorizations"].get<long long>() > 0);
+  BOOST_TEST(j[0]["grid"]["time"]["points"] == j[1]["grid"]["time"]["points"]);
+  BOOST_TEST(j[0]["diagnostics"]["error"]["max"].get<double>() ==
+                 j[1]["diagnostics"]["error"]["max"].get<double>(),
+             boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(std::count(csv[0].begin(), csv[0].end(), '\n') ==
+             std::count(csv[1].begin(), csv[1].end(), '\n'));
+  // A tolerance with a step count, a global solve, or an unknown linear
+  // solver: refused by name, nothing written.
+  const std::string with_points = KleinGordon() + "";
+  std::string bad = with_points;
+  bad.insert(bad.find("window_points"), "tolerance = 1e-6\n");
+  Refused(s.RunScene("both", bad), {"tolerance", "points"});
+  BOOST_TEST(s.Clean("both"));
+  std::string global = merged("modes");
+  global.replace(global.find("window_points = 9"), 17, "window_points = 0");
+  Refused(s.RunScene("global", global), {"window_points = 0", "tolerance"});
+  BOOST_TEST(s.Clean("global"));
+  std::string solver = merged("gmres");
+  Refused(s.RunScene("gmres", solver), {"linear_solver", "modes", "sparse-lu"});
+  BOOST_TEST(s.Clean("gmres"));
+  std::string negative = merged("modes");
+  negative.replace(negative.find("tolerance = 1e-6"), 16, "tolerance = -1e-6");
+  Refused(s.RunScene("negative", negative), {"tolerance"});
+  BOOST_TEST(s.Clean("negative"));
+}
+
+// `vivp converge --field … --tolerance`: one march per tolerance, each row
+// converged, the errors tracking the tolerance.
+BOOST_AUTO_TEST_CASE(ConvergeField_TracksTheTolerance) {
+  const auto j = Converge(
+      "--field klein_gordon --operator sbp63 --tolerance 1e-4,1e-6,1e-8");
+  BOOST_TEST(j["study"].get<std::string>() == "tolerance");
+  BOOST_TEST_REQUIRE(j["rows"].size() == 3u);
+  for (const auto& r : j["rows"]) {
+    BOOST_TEST(r["converged"].get<bool>());
+    // Measured: 0.09, 0.02, 0.06 of the tolerance.
+    BOOST_TEST(r["max_error_v"].get<double>() <= r["tolerance"].get<double>());
+  }
+  BOOST_TEST(j["rows"][2]["points"].get<long long>() >
+             j["rows"][0]["points"].get<long long>());
+  // Measured slope 1.04.
+  BOOST_TEST(j["tracking_max_v"]["slope"].get<double>() > 0.7);
+  BOOST_TEST(j["tracking_max_v"]["slope"].get<double>() < 1.5);
+}
