@@ -140,7 +140,7 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
       const double drift = j["max_change"].get<double>();
       double interior = 0;
       for (std::size_t k = 0; k < run.values[c].size(); ++k)
-        if (!run.window_end[k])
+        if (!run.closure[k])
           interior =
               std::max(interior, std::abs(run.values[c][k] - stats.first));
       j["relative_drift"] =
@@ -148,7 +148,7 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
       j["max_change_interior"] = interior;
       human << "  " << name << ": " << Rounded(stats.first) << " → "
             << Rounded(stats.last) << " (max change " << Rounded(drift) << "; "
-            << Rounded(interior) << " away from the windows' last slices)\n";
+            << Rounded(interior) << " before the last slice)\n";
     }
     d[name] = j;
   }

@@ -52,8 +52,8 @@ FieldRun Run(const FieldScene& s,
   const auto& sol = run.solution;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.status.converged) return run;
-  run.window_end.assign(sol.t.size(), 0);
-  for (std::size_t k : sol.window_ends) run.window_end.at(k) = 1;
+  run.closure.assign(sol.t.size(), 0);
+  if (!sol.window_ends.empty()) run.closure.at(sol.window_ends.back()) = 1;
   run.columns = s.output.diagnostics;
   run.values.assign(run.columns.size(), {});
   const std::size_t n = std::size_t(dx.points()) * M;

@@ -23,9 +23,10 @@ struct FieldRun {
   // (max over x and components of |φ − φ_exact|).
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;
-  // Per slice: whether it is the last slice of a window, whose φ_t is the
-  // closure row of D_t, an order less accurate (docs/fields.md §6).
-  std::vector<char> window_end;
+  // Per slice: whether its φ_t is the closure row of D_t, an order less
+  // accurate (docs/fields.md §6): the march's last slice only, since where
+  // two windows meet the slice is the corrected hand-off state (§4).
+  std::vector<char> closure;
   // The corrected end state against the exact solution, NaN without one.
   double end_state_error = 0;
 };
