@@ -67,7 +67,8 @@ Panel PathsPanel(const studies::NamedProblem& problem,
                  const std::string& title);
 
 // The paper's path figures (5, 8, 10, 12): regularized SBP21, Nt = 32 on
-// [0, 1], the full doubled system so that x1 and x2 are solved separately.
+// [0, 1] (doubled until resolved for a problem that needs more), the full
+// doubled system so that x1 and x2 are solved separately.
 std::filesystem::path PathsFigure(const std::filesystem::path& dir,
                                   const std::string& stem,
                                   const std::string& problem_name,
