@@ -25,6 +25,12 @@
 // by multipliers append Nt·m unknowns per Dirichlet side after the blocks
 // (field_boundary.h).
 //
+// In d spatial dimensions (a density with kSpaceDim = d on an
+// sbp::SpaceGrid of d axes, space_grid.h) j is the grid's flat point index,
+// Hˣ_j the product of the axes' weights, the density sees the gradient
+// (D_0 φ, …, D_{d−1} φ) and the spatial term is Σ_b Hᵗ_i (D_bᵀ Hˣ
+// ∂L/∂(∂_bφ))_j; everything else is as above (d = 1 is the formula above).
+//
 // The Jacobian is assembled pointwise: at each (i, j) the density sees φ,
 // φ_t (row i of D̄_t along the column j) and φ_x (row j of D_x along the slice
 // i); its 3m × 3m Hessian from automatic differentiation is chained through
@@ -39,6 +45,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/action/field_boundary.h"
@@ -46,10 +53,23 @@
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
 #include "core/sbp/space.h"
+#include "core/sbp/space_grid.h"
 
 namespace vivp::action {
 
-// φ, φ_t and φ_x on the grid, time-major: value (i·Nx + j)·m + a.
+// A density's number of spatial dimensions: its kSpaceDim, 1 if it declares
+// none. Its third argument then holds the gradient, d·m values: ∂_0 φ (m
+// components), then ∂_1 φ, …
+template <class Density>
+constexpr int SpaceDimOf() {
+  if constexpr (requires { Density::kSpaceDim; })
+    return Density::kSpaceDim;
+  else
+    return 1;
+}
+
+// φ, φ_t and the gradient on the grid, time-major: φ and φ_t at
+// (i·Nx + j)·m + a, ∂_b φ at ((i·Nx + j)·d + b)·m + a (d = 1: as φ).
 template <class Real>
 struct FieldValues {
   std::vector<Real> phi, phi_t, phi_x;
@@ -59,22 +79,36 @@ template <class Density, class Real = double>
 class FieldSystem {
  public:
   static constexpr int m = Density::kDim;
-  static constexpr int K = 3 * m;  // the density's arguments (φ, φ_t, φ_x)
+  static constexpr int d = SpaceDimOf<Density>();
+  // The density's arguments (φ, φ_t, ∂_0 φ, …, ∂_{d−1} φ).
+  static constexpr int K = (2 + d) * m;
   using Scalar = Real;
   using Hessian = Eigen::Matrix<Real, K, K>;
 
-  // phi0, pi0: φ(0, x_j) and φ_t(0, x_j), value j·m + a.
+  // phi0, pi0: φ(0, x_j) and φ_t(0, x_j), value j·m + a, on the grid of
+  // d axes (space_grid.h; its flat point index j); a density of one spatial
+  // dimension may be given its axis alone.
   FieldSystem(const Density& density, const sbp::RegularizedOperator<Real>& dt,
-              const sbp::SpaceDerivative<Real>& dx, std::vector<Real> phi0,
+              sbp::SpaceGrid<Real> grid, std::vector<Real> phi0,
               std::vector<Real> pi0)
       : density_(density),
         dt_(dt),
-        dx_(dx),
+        grid_(std::move(grid)),
         nt_(dt.points()),
-        nx_(dx.points()) {
+        nx_(grid_.points()) {
+    if (grid_.dim() != d)
+      throw std::invalid_argument("the density has " + std::to_string(d) +
+                                  " spatial dimensions, the grid " +
+                                  std::to_string(grid_.dim()) + " axes");
     SetInitial(std::move(phi0), std::move(pi0));
-    couples_t_x_ = !HessianBlockVanishes<m, m>(m, 2 * m);  // ∂²L/∂φ_t∂φ_x
+    // ∂²L/∂φ_t∂(∇φ)
+    couples_t_x_ = !HessianBlockVanishes<m, d * m>(m, 2 * m);
   }
+  FieldSystem(const Density& density, const sbp::RegularizedOperator<Real>& dt,
+              const sbp::SpaceDerivative<Real>& dx, std::vector<Real> phi0,
+              std::vector<Real> pi0)
+      : FieldSystem(density, dt, sbp::SpaceGrid<Real>(dx), std::move(phi0),
+                    std::move(pi0)) {}
 
   int time_points() const { return nt_; }
   int space_points() const { return nx_; }
@@ -92,7 +126,12 @@ class FieldSystem {
   void SetBoundary(int side, BoundaryKind kind, std::vector<Real> values) {
     if (side != 0 && side != 1)
       throw std::invalid_argument("boundary side must be 0 (left) or 1");
-    if (kind != BoundaryKind::kNatural && dx_.periodic())
+    if (kind != BoundaryKind::kNatural && d > 1)
+      throw std::invalid_argument(
+          std::string("a ") + BoundaryName(kind) +
+          " boundary is built for one spatial dimension only; in " +
+          std::to_string(d) + " the faces keep the natural condition");
+    if (kind != BoundaryKind::kNatural && grid_.axis(0).periodic())
       throw std::invalid_argument(
           std::string("a ") + BoundaryName(kind) +
           " boundary needs an interval; the periodic circle has none");
@@ -127,7 +166,12 @@ class FieldSystem {
   }
   bool couples_time_and_space() const { return couples_t_x_; }
   const sbp::RegularizedOperator<Real>& time_operator() const { return dt_; }
-  const sbp::SpaceDerivative<Real>& space_operator() const { return dx_; }
+  // The spatial axis of a one-dimensional field (the first axis otherwise),
+  // and the grid.
+  const sbp::SpaceDerivative<Real>& space_operator() const {
+    return grid_.axis(0);
+  }
+  const sbp::SpaceGrid<Real>& space_grid() const { return grid_; }
   const Density& density() const { return density_; }
   const std::vector<Real>& phi0() const { return phi0_; }
   const std::vector<Real>& pi0() const { return pi0_; }
@@ -145,12 +189,12 @@ class FieldSystem {
     pi0_ = std::move(pi0);
   }
 
-  // φ, D̄_t φ and D_x φ of the unknowns y on the grid.
+  // φ, D̄_t φ and ∇φ of the unknowns y on the grid.
   void Fields(const Real* y, FieldValues<Real>& out) const {
     const std::size_t n = static_cast<std::size_t>(nt_) * nx_ * m;
     out.phi.resize(n);
     out.phi_t.resize(n);
-    out.phi_x.resize(n);
+    out.phi_x.resize(n * d);
     auto& col = scratch_.col;
     auto& col_t = scratch_.col_t;
     col.resize(nt_);
@@ -172,12 +216,19 @@ class FieldSystem {
     for (int i = 0; i < nt_; ++i)
       for (int a = 0; a < m; ++a) {
         for (int j = 0; j < nx_; ++j) row[j] = out.phi[At(i, j, a)];
-        dx_.Apply(std::span<const Real>(row), std::span<Real>(row_x));
-        for (int j = 0; j < nx_; ++j) out.phi_x[At(i, j, a)] = row_x[j];
+        for (int b = 0; b < d; ++b) {
+          grid_.Apply(b, std::span<const Real>(row), std::span<Real>(row_x),
+                      scratch_.line);
+          for (int j = 0; j < nx_; ++j) out.phi_x[Grad(i, j, b, a)] = row_x[j];
+        }
       }
   }
 
   int At(int i, int j, int a) const { return (i * nx_ + j) * m + a; }
+  // ∂_b φ_a at (i, j) in FieldValues::phi_x.
+  int Grad(int i, int j, int b, int a) const {
+    return ((i * nx_ + j) * d + b) * m + a;
+  }
 
   // The density as a function of z = (φ, φ_t, φ_x).
   auto Call() const {
@@ -216,15 +267,16 @@ class FieldSystem {
     auto& v = scratch_.values;
     Fields(y, v);
     const std::size_t n = static_cast<std::size_t>(nt_) * nx_ * m;
-    auto& g = scratch_.g;  // ∂L/∂φ, ∂L/∂φ_t, ∂L/∂φ_x, time-major
-    g.resize(3 * n);
+    auto& g = scratch_.g;  // ∂L/∂φ, ∂L/∂φ_t, ∂L/∂(∇φ), time-major
+    g.resize((2 + d) * n);
     for (int i = 0; i < nt_; ++i)
       for (int j = 0; j < nx_; ++j) {
         const auto grad = PointGradient(v, i, j);
         for (int a = 0; a < m; ++a) {
           g[At(i, j, a)] = grad[a];
           g[n + At(i, j, a)] = grad[m + a];
-          g[2 * n + At(i, j, a)] = grad[2 * m + a];
+          for (int b = 0; b < d; ++b)
+            g[2 * n + Grad(i, j, b, a)] = grad[(2 + b) * m + a];
         }
       }
     const auto& D = dt_.base();
@@ -232,7 +284,7 @@ class FieldSystem {
     auto& dw = scratch_.col_t;
     col.resize(nt_);
     for (int j = 0; j < nx_; ++j) {
-      const Real hx = dx_.NormWeight(j);
+      const Real hx = grid_.NormWeight(j);
       for (int a = 0; a < m; ++a) {
         for (int i = 0; i < nt_; ++i) {
           f[Phi(i, j, a)] = D.NormWeight(i) * hx * g[At(i, j, a)];
@@ -264,10 +316,12 @@ class FieldSystem {
     for (int i = 0; i < nt_; ++i) {
       const Real ht = D.NormWeight(i);
       for (int a = 0; a < m; ++a) {
-        for (int j = 0; j < nx_; ++j) row[j] = g[2 * n + At(i, j, a)];
         s.assign(nx_, Real(0));
-        dx_.AddTransposeH(std::span<const Real>(row), std::span<Real>(drow),
-                          std::span<Real>(s));
+        for (int b = 0; b < d; ++b) {
+          for (int j = 0; j < nx_; ++j) row[j] = g[2 * n + Grad(i, j, b, a)];
+          grid_.AddTransposeH(b, std::span<const Real>(row), std::span<Real>(s),
+                              scratch_.line);
+        }
         for (int j = 0; j < nx_; ++j) f[Phi(i, j, a)] += ht * s[j];
       }
     }
@@ -287,24 +341,18 @@ class FieldSystem {
     for (int i = 0; i < nt_; ++i)
       for (int j = 0; j < nx_; ++j) {
         const Hessian h =
-            D.NormWeight(i) * dx_.NormWeight(j) * PointHessian(v, i, j);
+            D.NormWeight(i) * grid_.NormWeight(j) * PointHessian(v, i, j);
         const int count = LocalEntries(i, j, local);
         for (int r = 0; r < count; ++r) {
           const auto& lr = local[r];
-          // Row entry r's weights applied once: (wφ, wt, wx)·H, m × K.
-          const Eigen::Matrix<Real, m, K> row =
-              lr.w[0] * h.template topRows<m>() +
-              lr.w[1] * h.template middleRows<m>(m) +
-              lr.w[2] * h.template bottomRows<m>();
+          // Row entry r's weights applied once: (wφ, wt, w∇)·H, m × K.
+          const Eigen::Matrix<Real, m, K> row = WeightedRows(lr, h);
           for (int c = 0; c < count; ++c) {
             const auto& lc = local[c];
             // A time neighbour and a space neighbour meet only through
-            // ∂²L/∂φ_t∂φ_x.
+            // ∂²L/∂φ_t∂(∇φ).
             if (!couples_t_x_ && lr.kind + lc.kind == 3) continue;
-            const Eigen::Matrix<Real, m, m> b =
-                lc.w[0] * row.template leftCols<m>() +
-                lc.w[1] * row.template middleCols<m>(m) +
-                lc.w[2] * row.template rightCols<m>();
+            const Eigen::Matrix<Real, m, m> b = WeightedCols(lc, row);
             for (int a = 0; a < m; ++a)
               for (int e = 0; e < m; ++e)
                 sink.Add(Phi(lr.i, lr.j, a), Phi(lc.i, lc.j, e), b(a, e));
@@ -314,7 +362,7 @@ class FieldSystem {
     const auto last = D.row(nt_ - 1);
     const auto first = D.row(0);
     for (int j = 0; j < nx_; ++j) {
-      const Real hx = dx_.NormWeight(j);
+      const Real hx = grid_.NormWeight(j);
       for (int a = 0; a < m; ++a) {
         sink.Add(Phi(nt_ - 1, j, a), Lambda3(j, a), hx);
         for (std::size_t k = 0; k < last.coeffs.size(); ++k)
@@ -335,34 +383,62 @@ class FieldSystem {
 
  private:
   // One unknown node (i, j) the density at a grid point depends on, with
-  // ∂(φ, φ_t, φ_x)/∂φ₊(i, j); kind 0 = the point itself, 1 = a time
+  // ∂(φ, φ_t, ∂_0 φ, …)/∂φ₊(i, j); kind 0 = the point itself, 1 = a time
   // neighbour, 2 = a space neighbour.
   struct Local {
     int i, j, kind;
-    Real w[3];
+    Real w[2 + d];
   };
-  // 1 + the widest row of D̄_t (SBP84: 12) + the widest row of D_x.
-  static constexpr int kMaxLocal = 32;
+  // 1 + the widest row of D̄_t (SBP84: 12) + the widest row of each D_b.
+  static constexpr int kMaxLocal = 20 + 12 * d;
+
+  // Σ_s w_s · (rows s·m … s·m + m − 1 of h), and the same over columns: one
+  // expression, summed left to right.
+  template <int... S>
+  static Eigen::Matrix<Real, m, K> WeightedRowsOf(
+      const Local& l, const Hessian& h, std::integer_sequence<int, S...>) {
+    return (... + (l.w[S] * h.template middleRows<m>(S * m)));
+  }
+  static Eigen::Matrix<Real, m, K> WeightedRows(const Local& l,
+                                                const Hessian& h) {
+    return WeightedRowsOf(l, h, std::make_integer_sequence<int, 2 + d>());
+  }
+  template <int... S>
+  static Eigen::Matrix<Real, m, m> WeightedColsOf(
+      const Local& l, const Eigen::Matrix<Real, m, K>& row,
+      std::integer_sequence<int, S...>) {
+    return (... + (l.w[S] * row.template middleCols<m>(S * m)));
+  }
+  static Eigen::Matrix<Real, m, m> WeightedCols(
+      const Local& l, const Eigen::Matrix<Real, m, K>& row) {
+    return WeightedColsOf(l, row, std::make_integer_sequence<int, 2 + d>());
+  }
 
   // The time neighbours are those of point mechanics (local_map.h: row i of
   // D̄ including the penalty, the node itself first or among them).
   int LocalEntries(int i, int j, Local* out) const {
     int count = 1;
-    out[0] = {i, j, 0, {Real(1), Real(0), Real(0)}};
+    out[0] = {i, j, 0, {}};
+    out[0].w[0] = Real(1);
     const LocalMap<Real> time = MakeLocalMap(dt_, i);
     for (int e = 0; e < time.size; ++e) {
       const auto& t = time.entries[e];
-      if (t.node == i)
+      if (t.node == i) {
         out[0].w[1] = t.wv;
-      else
-        out[count++] = {t.node, j, 1, {Real(0), t.wv, Real(0)}};
+      } else {
+        out[count] = {t.node, j, 1, {}};
+        out[count++].w[1] = t.wv;
+      }
     }
-    dx_.ForRow(j, [&](int l, Real w) {
-      if (l == j)
-        out[0].w[2] += w;
-      else
-        out[count++] = {i, l, 2, {Real(0), Real(0), w}};
-    });
+    for (int b = 0; b < d; ++b)
+      grid_.ForRow(b, j, [&](int l, Real w) {
+        if (l == j) {
+          out[0].w[2 + b] += w;
+        } else {
+          out[count] = {i, l, 2, {}};
+          out[count++].w[2 + b] = w;
+        }
+      });
     return count;
   }
 
@@ -370,13 +446,14 @@ class FieldSystem {
     for (int a = 0; a < m; ++a) {
       z[a] = v.phi[At(i, j, a)];
       z[m + a] = v.phi_t[At(i, j, a)];
-      z[2 * m + a] = v.phi_x[At(i, j, a)];
+      for (int b = 0; b < d; ++b)
+        z[(2 + b) * m + a] = v.phi_x[Grad(i, j, b, a)];
     }
   }
 
   const Density& density_;
   const sbp::RegularizedOperator<Real>& dt_;
-  const sbp::SpaceDerivative<Real>& dx_;
+  sbp::SpaceGrid<Real> grid_;
   int nt_, nx_;
   std::vector<Real> phi0_, pi0_;
   bool couples_t_x_ = false;
@@ -386,7 +463,7 @@ class FieldSystem {
   // Work arrays reused across evaluations (not thread-safe).
   struct Scratch {
     FieldValues<Real> values;
-    std::vector<Real> g, col, col_t, row, row_x, t, s;
+    std::vector<Real> g, col, col_t, row, row_x, t, s, line;
   };
   mutable Scratch scratch_;
 };

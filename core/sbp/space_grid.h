@@ -100,32 +100,49 @@ class SpaceGrid {
     return w;
   }
 
-  // out = D_a u for a scalar field u of points() values.
+  // out = D_a u for a scalar field u of points() values; work is scratch
+  // (resized to two lines).
   template <class T>
-  void Apply(int a, std::span<const T> u, std::span<T> out) const {
-    const int n = points(a);
-    std::vector<T> line(n), d(n);
+  void Apply(int a, std::span<const T> u, std::span<T> out,
+             std::vector<T>& work) const {
+    const int n = points(a), s = stride(a);
+    work.resize(2 * std::size_t(n));
+    const std::span<T> line(work.data(), n), d(work.data() + n, n);
     ForEachLine(a, [&](int base) {
-      for (int k = 0; k < n; ++k) line[k] = u[base + k * stride(a)];
+      for (int k = 0; k < n; ++k) line[k] = u[base + k * s];
       axes_[a].template Apply<T>(line, d);
-      for (int k = 0; k < n; ++k) out[base + k * stride(a)] = d[k];
+      for (int k = 0; k < n; ++k) out[base + k * s] = d[k];
     });
   }
-
-  // out += D_aᵀ H q, the variation of Σ_j H_j q_j (D_a u)_j in u.
   template <class T>
-  void AddTransposeH(int a, std::span<const T> q, std::span<T> out) const {
-    const int n = points(a);
-    std::vector<T> line(n), dq(n), acc(n);
+  void Apply(int a, std::span<const T> u, std::span<T> out) const {
+    std::vector<T> work;
+    Apply(a, u, out, work);
+  }
+
+  // out += D_aᵀ H q, the variation of Σ_j H_j q_j (D_a u)_j in u; work is
+  // scratch (resized to three lines).
+  template <class T>
+  void AddTransposeH(int a, std::span<const T> q, std::span<T> out,
+                     std::vector<T>& work) const {
+    const int n = points(a), s = stride(a);
+    work.resize(3 * std::size_t(n));
+    const std::span<T> line(work.data(), n), dq(work.data() + n, n),
+        acc(work.data() + 2 * n, n);
     ForEachLine(a, [&](int base) {
-      for (int k = 0; k < n; ++k) line[k] = q[base + k * stride(a)];
+      for (int k = 0; k < n; ++k) line[k] = q[base + k * s];
       std::fill(acc.begin(), acc.end(), T(0));
       axes_[a].template AddTransposeH<T>(line, dq, acc);
       for (int k = 0; k < n; ++k) {
-        const int j = base + k * stride(a);
+        const int j = base + k * s;
         out[j] += T(NormWeightAcross(j, a)) * acc[k];
       }
     });
+  }
+  template <class T>
+  void AddTransposeH(int a, std::span<const T> q, std::span<T> out) const {
+    std::vector<T> work;
+    AddTransposeH(a, q, out, work);
   }
 
   // Calls fn(l, (D_a)_{jl}) for the nonzero entries of row j of D_a (flat

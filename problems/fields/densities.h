@@ -11,8 +11,11 @@
 //   T operator()(const T* phi, const T* phi_t, const T* phi_x) const;
 //
 // so that its derivatives come from automatic differentiation and no field
-// equation is written by hand. Each one below is L = ½|φ_t|² − ½c²|φ_x|² −
-// V(φ); the Euler–Lagrange equation is φ_tt = c²φ_xx − V′(φ).
+// equation is written by hand. A density in d spatial dimensions declares
+// `static constexpr int kSpaceDim = d` and receives the gradient as its
+// third argument, d·kDim values (∂_0 φ's components, then ∂_1 φ's, …);
+// without it d = 1, as for every density below. Each one below is L = ½|φ_t|² −
+// ½c²|φ_x|² − V(φ); the Euler–Lagrange equation is φ_tt = c²φ_xx − V′(φ).
 #pragma once
 
 #include <cmath>

@@ -137,6 +137,10 @@ FieldSolution SolveField(const Density& density,
                          std::vector<double> pi0,
                          const FieldSolveOptions& options = {}) {
   constexpr int m = Density::kDim;
+  static_assert(action::SpaceDimOf<Density>() == 1,
+                "SolveField marches fields of one spatial axis; a density of "
+                "more (kSpaceDim > 1) has its discrete action "
+                "(action::FieldSystem on an sbp::SpaceGrid) but no march yet");
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   FieldSolution s;
