@@ -146,9 +146,9 @@ bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
   return converged == int(study.rows.size());
 }
 
-nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
-                              const studies::FieldStudyOptions& so,
-                              const studies::FieldConvergenceStudy& study) {
+// A field study's rows: a point-mechanics row with the spatial grid and
+// the windows.
+nlohmann::json FieldRowsJson(const studies::FieldConvergenceStudy& study) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : study.rows) {
     nlohmann::json row = ConvergenceRowJson(r);
@@ -157,6 +157,13 @@ nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
     row["windows"] = r.windows;
     rows.push_back(row);
   }
+  return rows;
+}
+
+nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
+                              const studies::FieldStudyOptions& so,
+                              const studies::FieldConvergenceStudy& study) {
+  const nlohmann::json rows = FieldRowsJson(study);
   const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
   nlohmann::json j = {{"field", p.name},
                       {"description", p.description},
@@ -217,13 +224,7 @@ bool PrintFieldTolerance(std::ostream& human, const studies::FieldProblem& p,
 nlohmann::json FieldToleranceJson(const studies::FieldProblem& p,
                                   const studies::FieldStudyOptions& so,
                                   const studies::FieldConvergenceStudy& study) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : study.rows) {
-    nlohmann::json row = ConvergenceRowJson(r);
-    row["space_points"] = r.space_points;
-    row["windows"] = r.windows;
-    rows.push_back(row);
-  }
+  const nlohmann::json rows = FieldRowsJson(study);
   auto track = [](const studies::ToleranceTracking& t) {
     return nlohmann::json{{"slope", JsonNumber(t.slope)},
                           {"ratio_min", JsonNumber(t.min_ratio)},

@@ -77,26 +77,22 @@ std::string List(const std::vector<T>& v) {
   return s;
 }
 
-// One solve and its errors at t = T, max over x.
-FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
-                        long long nt, long long nx) {
-  const auto dx = FieldSpace(p, o.space_order, nx);
+// Solves the problem on dx and grid into row r: its status, counts and
+// the errors at t = T, max over x. A bad argument throws; any other failure
+// is the row's reason. Returns the solution.
+spacetime::FieldSolution SolveRow(const FieldProblem& p,
+                                  const sbp::SpaceDerivative<double>& dx,
+                                  const spacetime::FieldGrid& grid,
+                                  const spacetime::FieldSolveOptions& options,
+                                  FieldConvergenceRow& r) {
   std::vector<double> phi(dx.points()), pi(dx.points());
   for (int j = 0; j < dx.points(); ++j) p.exact(0.0, dx.x(j), &phi[j], &pi[j]);
-  const spacetime::FieldGrid grid{.op = o.op,
-                                  .points = nt,
-                                  .t_end = o.t_end,
-                                  .window_points = o.window_points};
-  FieldConvergenceRow r;
-  r.points = nt;
-  r.space_points = nx;
-  r.dx = dx.dx();
-  r.dt = o.t_end / double(nt);
-  r.dt_true = o.t_end / double(nt - 1);
   const fields::ComposedDensity<1> density{p.terms};
+  r.space_points = dx.points();
+  r.dx = dx.dx();
   spacetime::FieldSolution s;
   try {
-    s = spacetime::SolveField(density, dx, grid, phi, pi);
+    s = spacetime::SolveField(density, dx, grid, phi, pi, options);
   } catch (const std::invalid_argument&) {
     throw;
   } catch (const std::exception& e) {
@@ -107,12 +103,12 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
   r.iterations = int(s.factorizations);
   r.windows = s.windows;
   r.seconds = s.seconds_total;
-  if (!s.status.converged) return r;
+  if (!s.status.converged) return s;
   const std::size_t last = s.t.size() - 1, n = std::size_t(dx.points());
   r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected = 0;
   for (int j = 0; j < dx.points(); ++j) {
     double u = 0, u_t = 0;
-    p.exact(o.t_end, dx.x(j), &u, &u_t);
+    p.exact(grid.t_end, dx.x(j), &u, &u_t);
     r.err_x = std::max(r.err_x, std::abs(s.end_phi_node[j] - u));
     r.err_v = std::max(r.err_v, std::abs(s.phi_t[last * n + j] - u_t));
     r.err_x_corrected = std::max(r.err_x_corrected, std::abs(s.end.phi[j] - u));
@@ -120,6 +116,22 @@ FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
         std::max(r.err_p_corrected, std::abs(s.end.phi_t[j] - u_t));
   }
   r.error_estimate = s.end.phi_estimate;
+  return s;
+}
+
+// One solve and its errors at t = T, max over x.
+FieldConvergenceRow Row(const FieldProblem& p, const FieldStudyOptions& o,
+                        long long nt, long long nx) {
+  const auto dx = FieldSpace(p, o.space_order, nx);
+  const spacetime::FieldGrid grid{.op = o.op,
+                                  .points = nt,
+                                  .t_end = o.t_end,
+                                  .window_points = o.window_points};
+  FieldConvergenceRow r;
+  r.points = nt;
+  r.dt = o.t_end / double(nt);
+  r.dt_true = o.t_end / double(nt - 1);
+  SolveRow(p, dx, grid, {}, r);
   return r;
 }
 
@@ -218,9 +230,6 @@ FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
     if (!(tol > 0 && tol < 1))
       throw std::invalid_argument("a tolerance must lie in (0, 1), got " +
                                   std::to_string(tol));
-  std::vector<double> phi(dx.points()), pi(dx.points());
-  for (int j = 0; j < dx.points(); ++j) p.exact(0.0, dx.x(j), &phi[j], &pi[j]);
-  const fields::ComposedDensity<1> density{p.terms};
   FieldConvergenceStudy study;
   for (double tol : tolerances) {
     spacetime::FieldSolveOptions options;
@@ -229,38 +238,12 @@ FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
         .op = o.op, .points = 0, .t_end = o.t_end, .window_points = window};
     FieldConvergenceRow r;
     r.tolerance = tol;
-    r.space_points = dx.points();
-    r.dx = dx.dx();
-    spacetime::FieldSolution s;
-    try {
-      s = spacetime::SolveField(density, dx, grid, phi, pi, options);
-    } catch (const std::invalid_argument&) {
-      throw;
-    } catch (const std::exception& e) {
-      s.status.reason = std::string("failed: ") + e.what();
-    }
-    r.converged = s.status.converged;
-    r.reason = s.status.reason;
-    r.iterations = int(s.factorizations);
-    r.windows = s.windows;
+    const auto s = SolveRow(p, dx, grid, options, r);
     r.rejected = s.rejected;
     r.points = s.points;
-    r.seconds = s.seconds_total;
     if (s.status.converged) {
       const std::size_t n = std::size_t(dx.points());
-      const std::size_t last = s.t.size() - 1;
-      r.err_x = r.err_v = r.err_x_corrected = r.err_p_corrected = 0;
       r.max_error = r.max_error_v = 0;
-      for (int j = 0; j < dx.points(); ++j) {
-        double u = 0, u_t = 0;
-        p.exact(o.t_end, dx.x(j), &u, &u_t);
-        r.err_x = std::max(r.err_x, std::abs(s.end_phi_node[j] - u));
-        r.err_v = std::max(r.err_v, std::abs(s.phi_t[last * n + j] - u_t));
-        r.err_x_corrected =
-            std::max(r.err_x_corrected, std::abs(s.end.phi[j] - u));
-        r.err_p_corrected =
-            std::max(r.err_p_corrected, std::abs(s.end.phi_t[j] - u_t));
-      }
       for (std::size_t k = 0; k < s.t.size(); ++k)
         for (int j = 0; j < dx.points(); ++j) {
           double u = 0, u_t = 0;
@@ -269,7 +252,6 @@ FieldConvergenceStudy RunFieldTolerance(const FieldProblem& p,
           r.max_error_v =
               std::max(r.max_error_v, std::abs(s.phi_t[k * n + j] - u_t));
         }
-      r.error_estimate = s.end.phi_estimate;
     }
     study.rows.push_back(r);
   }

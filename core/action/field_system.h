@@ -45,35 +45,15 @@
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "core/action/field_boundary.h"
-#include "core/action/local_map.h"
+#include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
 #include "core/sbp/space.h"
-#include "core/sbp/space_grid.h"
 
 namespace vivp::action {
-
-// A density's number of spatial dimensions: its kSpaceDim, 1 if it declares
-// none. Its third argument then holds the gradient, d·m values: ∂_0 φ (m
-// components), then ∂_1 φ, …
-template <class Density>
-constexpr int SpaceDimOf() {
-  if constexpr (requires { Density::kSpaceDim; })
-    return Density::kSpaceDim;
-  else
-    return 1;
-}
-
-// φ, φ_t and the gradient on the grid, time-major: φ and φ_t at
-// (i·Nx + j)·m + a, ∂_b φ at ((i·Nx + j)·d + b)·m + a (d = 1: as φ).
-template <class Real>
-struct FieldValues {
-  std::vector<Real> phi, phi_t, phi_x;
-};
 
 template <class Density, class Real = double>
 class FieldSystem {
@@ -337,22 +317,22 @@ class FieldSystem {
     auto& v = scratch_.values;
     Fields(y, v);
     const auto& D = dt_.base();
-    Local local[kMaxLocal];
+    FieldLocal<Real, d> local[FieldLocal<Real, d>::kMax];
     for (int i = 0; i < nt_; ++i)
       for (int j = 0; j < nx_; ++j) {
         const Hessian h =
             D.NormWeight(i) * grid_.NormWeight(j) * PointHessian(v, i, j);
-        const int count = LocalEntries(i, j, local);
+        const int count = FieldLocalEntries(dt_, grid_, i, j, local);
         for (int r = 0; r < count; ++r) {
           const auto& lr = local[r];
           // Row entry r's weights applied once: (wφ, wt, w∇)·H, m × K.
-          const Eigen::Matrix<Real, m, K> row = WeightedRows(lr, h);
+          const Eigen::Matrix<Real, m, K> row = lr.template Rows<m>(h);
           for (int c = 0; c < count; ++c) {
             const auto& lc = local[c];
             // A time neighbour and a space neighbour meet only through
             // ∂²L/∂φ_t∂(∇φ).
             if (!couples_t_x_ && lr.kind + lc.kind == 3) continue;
-            const Eigen::Matrix<Real, m, m> b = WeightedCols(lc, row);
+            const Eigen::Matrix<Real, m, m> b = lc.template Cols<m>(row);
             for (int a = 0; a < m; ++a)
               for (int e = 0; e < m; ++e)
                 sink.Add(Phi(lr.i, lr.j, a), Phi(lc.i, lc.j, e), b(a, e));
@@ -382,66 +362,6 @@ class FieldSystem {
   }
 
  private:
-  // One unknown node (i, j) the density at a grid point depends on, with
-  // ∂(φ, φ_t, ∂_0 φ, …)/∂φ₊(i, j); kind 0 = the point itself, 1 = a time
-  // neighbour, 2 = a space neighbour.
-  struct Local {
-    int i, j, kind;
-    Real w[2 + d];
-  };
-  // 1 + the widest row of D̄_t (SBP84: 12) + the widest row of each D_b.
-  static constexpr int kMaxLocal = 20 + 12 * d;
-
-  // Σ_s w_s · (rows s·m … s·m + m − 1 of h), and the same over columns: one
-  // expression, summed left to right.
-  template <int... S>
-  static Eigen::Matrix<Real, m, K> WeightedRowsOf(
-      const Local& l, const Hessian& h, std::integer_sequence<int, S...>) {
-    return (... + (l.w[S] * h.template middleRows<m>(S * m)));
-  }
-  static Eigen::Matrix<Real, m, K> WeightedRows(const Local& l,
-                                                const Hessian& h) {
-    return WeightedRowsOf(l, h, std::make_integer_sequence<int, 2 + d>());
-  }
-  template <int... S>
-  static Eigen::Matrix<Real, m, m> WeightedColsOf(
-      const Local& l, const Eigen::Matrix<Real, m, K>& row,
-      std::integer_sequence<int, S...>) {
-    return (... + (l.w[S] * row.template middleCols<m>(S * m)));
-  }
-  static Eigen::Matrix<Real, m, m> WeightedCols(
-      const Local& l, const Eigen::Matrix<Real, m, K>& row) {
-    return WeightedColsOf(l, row, std::make_integer_sequence<int, 2 + d>());
-  }
-
-  // The time neighbours are those of point mechanics (local_map.h: row i of
-  // D̄ including the penalty, the node itself first or among them).
-  int LocalEntries(int i, int j, Local* out) const {
-    int count = 1;
-    out[0] = {i, j, 0, {}};
-    out[0].w[0] = Real(1);
-    const LocalMap<Real> time = MakeLocalMap(dt_, i);
-    for (int e = 0; e < time.size; ++e) {
-      const auto& t = time.entries[e];
-      if (t.node == i) {
-        out[0].w[1] = t.wv;
-      } else {
-        out[count] = {t.node, j, 1, {}};
-        out[count++].w[1] = t.wv;
-      }
-    }
-    for (int b = 0; b < d; ++b)
-      grid_.ForRow(b, j, [&](int l, Real w) {
-        if (l == j) {
-          out[0].w[2 + b] += w;
-        } else {
-          out[count] = {i, l, 2, {}};
-          out[count++].w[2 + b] = w;
-        }
-      });
-    return count;
-  }
-
   void Point(const FieldValues<Real>& v, int i, int j, Real* z) const {
     for (int a = 0; a < m; ++a) {
       z[a] = v.phi[At(i, j, a)];
