@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -87,9 +88,11 @@ double LinearSolveAgreement(const Density& density,
   lu.Solve(b - jac.matrix() * x, dxr);
   x += dxr;
   const bool dirichlet[2] = {left, right};
-  auto modes = std::make_shared<const spacetime::SpatialModes>(
-      dx, left ? 1 : 0, nx - int(left) - int(right));
-  spacetime::ModeSolver solver(dt, dx, m, dirichlet, modes);
+  const sbp::SpaceGrid<double> grid(dx);
+  const int first = left ? 1 : 0, count = nx - int(left) - int(right);
+  auto modes = std::make_shared<const spacetime::GridModes>(
+      grid, std::span<const int>(&first, 1), std::span<const int>(&count, 1));
+  spacetime::ModeSolver solver(dt, grid, m, dirichlet, modes);
   const double z[3 * m] = {};
   BOOST_REQUIRE(solver.Factor(spacetime::BlocksAt(density, z)));
   Eigen::VectorXd x2 = b;

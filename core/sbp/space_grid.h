@@ -145,6 +145,29 @@ class SpaceGrid {
     AddTransposeH(a, q, out, work);
   }
 
+  // Scratch of Gradient, kept by a caller that differentiates often.
+  template <class T>
+  struct GradientWork {
+    std::vector<T> comp, du, line;
+  };
+  // out = ∇u for a field of m components (value j·m + a): ∂_b u_a at
+  // (j·d + b)·m + a, so that d = 1 is the axis' ApplyComponents.
+  template <class T>
+  void Gradient(int m, std::span<const T> u, std::span<T> out,
+                GradientWork<T>& w) const {
+    const std::size_t n = std::size_t(points_);
+    const int d = dim();
+    w.comp.resize(n);
+    w.du.resize(n);
+    for (int a = 0; a < m; ++a) {
+      for (std::size_t j = 0; j < n; ++j) w.comp[j] = u[j * m + a];
+      for (int b = 0; b < d; ++b) {
+        Apply<T>(b, w.comp, w.du, w.line);
+        for (std::size_t j = 0; j < n; ++j) out[(j * d + b) * m + a] = w.du[j];
+      }
+    }
+  }
+
   // Calls fn(l, (D_a)_{jl}) for the nonzero entries of row j of D_a (flat
   // indices, 1/Δx_a included).
   template <class F>

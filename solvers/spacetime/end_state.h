@@ -25,17 +25,18 @@ struct FieldEnd {
 
 namespace detail {
 
-// The density at one spatial point with φ_x held fixed, as a point-mechanics
+// The density at one spatial point with ∇φ held fixed, as a point-mechanics
 // Lagrangian in (φ, φ_t).
 template <class Density>
 struct PointLagrangian {
   static constexpr int kDim = Density::kDim;
+  static constexpr int kGrad = action::SpaceDimOf<Density>() * kDim;
   const Density* density;
-  double phi_x[kDim];
+  double phi_x[kGrad];  // ∇φ, as the density receives it
   template <class T>
   T operator()(const T* x, const T* v) const {
-    T px[kDim];
-    for (int a = 0; a < kDim; ++a) px[a] = T(phi_x[a]);
+    T px[kGrad];
+    for (int a = 0; a < kGrad; ++a) px[a] = T(phi_x[a]);
     return (*density)(x, v, px);
   }
 };
@@ -64,8 +65,10 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
     }
     detail::PointLagrangian<Density> lagrangian{&system.density(), {}};
     double lambda3[m], lambda4[m];
+    for (int b = 0; b < action::SpaceDimOf<Density>(); ++b)
+      for (int a = 0; a < m; ++a)
+        lagrangian.phi_x[b * m + a] = v.phi_x[system.Grad(last, j, b, a)];
     for (int a = 0; a < m; ++a) {
-      lagrangian.phi_x[a] = v.phi_x[system.At(last, j, a)];
       lambda3[a] = y[system.Lambda3(j, a)];
       lambda4[a] = y[system.Lambda4(j, a)];
     }

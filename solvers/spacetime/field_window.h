@@ -99,22 +99,22 @@ class FieldWindow {
 
   // phi0, pi0: the march's initial data (the predictor checks the density's
   // form there).
-  FieldWindow(const Density& density, const sbp::SpaceDerivative<double>& dx,
+  FieldWindow(const Density& density, const sbp::SpaceGrid<double>& grid,
               const std::string& op, const FieldWindowOptions& options,
               std::span<const double> phi0, std::span<const double> pi0)
       : density_(density),
-        dx_(dx),
+        grid_(grid),
         op_(op),
         options_(options),
-        n_(dx.points() * m),
-        rho_(SpectralRadius(dx)),
+        n_(grid.points() * m),
+        rho_(SpectralRadius(grid)),
         modes_(density, options.sparse),
         sparse_(options.sparse) {
     const typename FieldPredictor<Density>::End ends[2] = {
         {options.boundary.left.kind, options.boundary.left.value},
         {options.boundary.right.kind, options.boundary.right.value}};
     try {
-      predictor_.emplace(density, dx, phi0, pi0, ends);
+      predictor_.emplace(density, grid, phi0, pi0, ends);
     } catch (const std::invalid_argument& e) {
       no_predictor_ = e.what();
     }
@@ -124,7 +124,7 @@ class FieldWindow {
   int order() const { return 2; }
   const std::string& op() const { return op_; }
   double FastestFrequency(const double* x, const double* v) const {
-    return FastestFieldFrequency(density_, dx_, rho_,
+    return FastestFieldFrequency(density_, grid_, rho_,
                                  std::span<const double>(x, n_),
                                  std::span<const double>(v, n_));
   }
@@ -160,12 +160,12 @@ class FieldWindow {
              bool fresh, bool nodes) {
     using variational::detail::WindowFailure;
     auto lap = Clock::now();
-    const int points = a.points, nx = dx_.points();
+    const int points = a.points, nx = grid_.points();
     // The system is kept while the window's operator is (its work arrays
     // are a window's size: allocating them per window cost page faults).
     if (Operators(points, a.dt) || !system_)
-      system_ =
-          std::make_unique<System>(density_, *dbar_, dx_, initial.x, initial.v);
+      system_ = std::make_unique<System>(density_, *dbar_, grid_, initial.x,
+                                         initial.v);
     else
       system_->SetInitial(initial.x, initial.v);
     detail::SetBoundaryData(*system_, options_.boundary, t0, a.dt);
@@ -348,7 +348,7 @@ class FieldWindow {
   }
 
   const Density& density_;
-  const sbp::SpaceDerivative<double>& dx_;
+  const sbp::SpaceGrid<double>& grid_;
   std::string op_;
   const FieldWindowOptions& options_;
   int n_;

@@ -40,8 +40,10 @@
 #include <string>
 #include <vector>
 
+#include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/space.h"
+#include "core/sbp/space_grid.h"
 #include "solvers/spacetime/input.h"
 #include "solvers/spacetime/resolution.h"
 #include "solvers/steppers/tableau.h"
@@ -80,22 +82,23 @@ template <class Density>
 class FieldAcceleration {
  public:
   static constexpr int m = Density::kDim;
+  static constexpr int d = action::SpaceDimOf<Density>();
+  static constexpr int K = (2 + d) * m;
 
-  FieldAcceleration(const Density& density,
-                    const sbp::SpaceDerivative<double>& dx,
+  FieldAcceleration(const Density& density, const sbp::SpaceGrid<double>& grid,
                     std::span<const double> phi0, std::span<const double> pi0)
-      : density_(density), dx_(dx), n_(dx.points()) {
-    std::vector<double> phi_x(phi0.size());
-    dx.ApplyComponents(m, phi0, phi_x);
+      : density_(density), grid_(grid), n_(grid.points()) {
+    std::vector<double> phi_x(phi0.size() * d);
+    grid.Gradient<double>(m, phi0, phi_x, gradient_work_);
     Eigen::Matrix<double, m, m> mass;
     for (int j = 0; j < n_; ++j) {
-      double z[3 * m];
+      double z[K];
       for (int a = 0; a < m; ++a) {
         z[a] = phi0[j * m + a];
         z[m + a] = pi0[j * m + a];
-        z[2 * m + a] = phi_x[j * m + a];
       }
-      const auto h = autodiff::Hessian<double, 3 * m>(
+      for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x[j * d * m + k];
+      const auto h = autodiff::Hessian<double, K>(
           [&](const auto* w) { return density_(w, w + m, w + 2 * m); }, z);
       const auto mj = h.hessian.template block<m, m>(m, m);
       if (j == 0) mass = mj;
@@ -103,22 +106,22 @@ class FieldAcceleration {
       if ((mj - mass).cwiseAbs().maxCoeff() > 1e-12 * scale ||
           h.hessian.template block<m, m>(m, 0).cwiseAbs().maxCoeff() >
               1e-12 * scale ||
-          h.hessian.template block<m, m>(m, 2 * m).cwiseAbs().maxCoeff() >
+          h.hessian.template block<m, d * m>(m, 2 * m).cwiseAbs().maxCoeff() >
               1e-12 * scale)
         throw std::invalid_argument(
-            "method of lines: the density must be ½ φ_tᵀ M φ_t − U(φ, φ_x) "
-            "with constant M; it is not at x = " +
-            std::to_string(dx.x(j)));
+            "method of lines: the density must be ½ φ_tᵀ M φ_t − U(φ, ∇φ) "
+            "with constant M; it is not at " +
+            Where(j));
     }
     Eigen::FullPivLU<Eigen::Matrix<double, m, m>> lu(mass);
     if (!lu.isInvertible())
       throw std::invalid_argument(
           "method of lines: ∂²ℒ/∂φ_t² is singular (no kinetic term)");
     inverse_mass_ = lu.inverse();
-    phi_x_.resize(std::size_t(n_) * m);
+    phi_x_.resize(std::size_t(n_) * m * d);
     q_.resize(n_);
-    dq_.resize(n_);
     out_.resize(n_);
+    flux_.resize(std::size_t(n_) * m * d);
     drive_.resize(std::size_t(n_) * m);
   }
 
@@ -130,31 +133,30 @@ class FieldAcceleration {
 
   void operator()(std::span<const double> phi, std::span<double> acc) const {
     ++evaluations_;
-    dx_.ApplyComponents(m, phi, phi_x_);
+    grid_.Gradient<double>(m, phi, phi_x_, gradient_work_);
     for (int j = 0; j < n_; ++j) {
-      double z[3 * m];
+      double z[K];
       for (int a = 0; a < m; ++a) {
         z[a] = phi[j * m + a];
         z[m + a] = 0;  // ∂ℒ/∂φ and ∂ℒ/∂φ_x do not depend on φ_t here
-        z[2 * m + a] = phi_x_[j * m + a];
       }
+      for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x_[j * d * m + k];
       const auto g =
-          autodiff::Gradient<double, 3 * m>(
+          autodiff::Gradient<double, K>(
               [&](const auto* w) { return density_(w, w + m, w + 2 * m); }, z)
               .second;
-      for (int a = 0; a < m; ++a) {
-        drive_[j * m + a] = g[a];
-        acc[j * m + a] = g[2 * m + a];  // q, until replaced below
-      }
+      for (int a = 0; a < m; ++a) drive_[j * m + a] = g[a];
+      for (int k = 0; k < d * m; ++k) flux_[j * d * m + k] = g[2 * m + k];
     }
+    // + Σ_b H⁻¹ D_bᵀ H q_b, q_b = ∂ℒ/∂(∂_bφ), per component.
     for (int a = 0; a < m; ++a) {
-      for (int j = 0; j < n_; ++j) {
-        q_[j] = acc[j * m + a];
-        out_[j] = 0;
+      std::fill(out_.begin(), out_.end(), 0.0);
+      for (int b = 0; b < d; ++b) {
+        for (int j = 0; j < n_; ++j) q_[j] = flux_[(j * d + b) * m + a];
+        grid_.AddTransposeH<double>(b, q_, out_, line_);
       }
-      dx_.AddTransposeH<double>(q_, dq_, out_);
       for (int j = 0; j < n_; ++j)
-        drive_[j * m + a] += out_[j] / dx_.NormWeight(j);
+        drive_[j * m + a] += out_[j] / grid_.NormWeight(j);
     }
     for (int j = 0; j < n_; ++j) {
       const Eigen::Map<const Eigen::Matrix<double, m, 1>> f(&drive_[j * m]);
@@ -164,11 +166,19 @@ class FieldAcceleration {
   }
 
  private:
+  std::string Where(int j) const {
+    std::string w = "x = (";
+    for (int a = 0; a < grid_.dim(); ++a)
+      w += (a ? ", " : "") + std::to_string(grid_.x(j, a));
+    return grid_.dim() == 1 ? "x = " + std::to_string(grid_.x(j, 0)) : w + ")";
+  }
+
   const Density& density_;
-  const sbp::SpaceDerivative<double>& dx_;
+  const sbp::SpaceGrid<double>& grid_;
   int n_;
   Eigen::Matrix<double, m, m> inverse_mass_;
-  mutable std::vector<double> phi_x_, q_, dq_, out_, drive_;
+  mutable std::vector<double> phi_x_, q_, out_, flux_, drive_, line_;
+  mutable sbp::SpaceGrid<double>::GradientWork<double> gradient_work_;
   mutable long long evaluations_ = 0;
 };
 
@@ -223,7 +233,7 @@ bool GaussStep(const Accel& accel, const steppers::Tableau& tab,
 
 template <class Density>
 MolSolution SolveFieldMol(const Density& density,
-                          const sbp::SpaceDerivative<double>& dx, double t_end,
+                          const sbp::SpaceGrid<double>& grid, double t_end,
                           const std::vector<double>& phi0,
                           const std::vector<double>& pi0,
                           const MolOptions& options = {}) {
@@ -231,10 +241,10 @@ MolSolution SolveFieldMol(const Density& density,
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   MolSolution s;
-  s.nx = dx.points();
+  s.nx = grid.points();
   s.components = m;
   const std::size_t n = std::size_t(s.nx) * m;
-  CheckFieldInput(t_end, dx, m, phi0, pi0);
+  CheckFieldInput(t_end, grid, m, phi0, pi0);
   if (options.steps < 1)
     throw std::invalid_argument("method of lines: steps must be ≥ 1");
   const auto& names = MolMethods();
@@ -242,7 +252,7 @@ MolSolution SolveFieldMol(const Density& density,
     throw std::invalid_argument("method of lines: unknown method '" +
                                 options.method +
                                 "' (leapfrog, gauss4, gauss6, dopri5)");
-  FieldAcceleration<Density> accel(density, dx, phi0, pi0);
+  FieldAcceleration<Density> accel(density, grid, phi0, pi0);
   const double h = t_end / double(options.steps);
   const long long every =
       options.output_every > 0 ? options.output_every : options.steps;
@@ -291,8 +301,8 @@ MolSolution SolveFieldMol(const Density& density,
     if (!phi.allFinite()) return finish(false, "dopri5: non-finite field");
     return finish(true, "converged");
   }
-  const double rho = SpectralRadius(dx);
-  const double omega = FastestFieldFrequency(density, dx, rho, phi0, pi0);
+  const double rho = SpectralRadius(grid);
+  const double omega = FastestFieldFrequency(density, grid, rho, phi0, pi0);
   auto a_of = [&](const Eigen::VectorXd& x, Eigen::VectorXd& out) {
     out.resize(long(n));
     accel(std::span<const double>(x.data(), n),
@@ -335,6 +345,17 @@ MolSolution SolveFieldMol(const Density& density,
   if (!phi.allFinite() || !v.allFinite())
     return finish(false, options.method + ": non-finite field");
   return finish(true, "converged");
+}
+
+// The one-dimensional field.
+template <class Density>
+MolSolution SolveFieldMol(const Density& density,
+                          const sbp::SpaceDerivative<double>& dx, double t_end,
+                          const std::vector<double>& phi0,
+                          const std::vector<double>& pi0,
+                          const MolOptions& options = {}) {
+  return SolveFieldMol(density, sbp::SpaceGrid<double>(dx), t_end, phi0, pi0,
+                       options);
 }
 
 }  // namespace vivp::spacetime

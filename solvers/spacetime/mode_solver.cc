@@ -8,17 +8,21 @@
 namespace vivp::spacetime {
 
 ModeSolver::ModeSolver(const sbp::RegularizedOperator<double>& dt,
-                       const sbp::SpaceDerivative<double>& dx, int m,
+                       const sbp::SpaceGrid<double>& grid, int m,
                        const bool dirichlet[2],
-                       std::shared_ptr<const SpatialModes> modes)
+                       std::shared_ptr<const GridModes> modes)
     : nt_(dt.points()),
-      nx_(dx.points()),
+      nx_(grid.points()),
       m_(m),
       dirichlet_{dirichlet[0], dirichlet[1]},
       modes_(std::move(modes)) {
+  if ((dirichlet_[0] || dirichlet_[1]) && grid.dim() != 1)
+    throw std::invalid_argument(
+        "mode solver: Dirichlet ends are eliminated on one spatial axis only");
   const int first = dirichlet_[0] ? 1 : 0;
   const int count = nx_ - first - (dirichlet_[1] ? 1 : 0);
-  if (!modes_ || modes_->first() != first || modes_->count() != count)
+  if (!modes_ || modes_->dim() != grid.dim() || modes_->count() != count ||
+      (grid.dim() == 1 && modes_->axis(0).first() != first))
     throw std::invalid_argument(
         "mode solver: the spatial modes must be those of the points without "
         "Dirichlet data");
@@ -26,7 +30,7 @@ ModeSolver::ModeSolver(const sbp::RegularizedOperator<double>& dt,
   ht_.resize(nt_);
   for (int i = 0; i < nt_; ++i) ht_[i] = D.NormWeight(i);
   hx_.resize(nx_);
-  for (int j = 0; j < nx_; ++j) hx_[j] = dx.NormWeight(j);
+  for (int j = 0; j < nx_; ++j) hx_[j] = grid.NormWeight(j);
   const auto row0 = D.row(0), rowN = D.row(nt_ - 1);
   for (double c : row0.coeffs) d_first_.push_back(c * D.inv_dt());
   for (double c : rowN.coeffs) d_last_.push_back(c * D.inv_dt());
@@ -160,10 +164,12 @@ void ModeSolver::Solve(double* b) const {
   const int B = Block(), nm = nt_ * m_;
   const bool eliminate = dirichlet_[0] || dirichlet_[1];
   if (eliminate) EliminatedRhs(b);
-  const int first = modes_->first(), count = modes_->count();
+  const int count = modes_->count();
   // The initial-data rows of (1) carry Hˣ_j like the node rows.
-  for (int j = first; j < first + count; ++j)
+  for (int q = 0; q < count; ++q) {
+    const int j = modes_->point_of(q);
     for (int r = nm; r < B; ++r) b[std::size_t(j) * B + r] *= hx_[j];
+  }
   modes_->Forward(b, B, B);
   // The data rows first, as in the factored matrix.
   auto gather = [&](const double* blk, double* w) {
@@ -175,14 +181,14 @@ void ModeSolver::Solve(double* b) const {
     const int k = modes_->system_of(q);
     const int other = partner_[q];
     if (other >= 0 && other < q) continue;  // solved with its partner
-    double* blk = b + std::size_t(first + q) * B;
+    double* blk = b + std::size_t(modes_->point_of(q)) * B;
     gather(blk, work_.data());
     if (other < 0) {
       lu_[k]->Solve(work_.data());
       std::copy(work_.begin(), work_.begin() + B, blk);
       continue;
     }
-    double* blk2 = b + std::size_t(first + other) * B;
+    double* blk2 = b + std::size_t(modes_->point_of(other)) * B;
     gather(blk2, work_.data() + B);
     lu_[k]->SolvePair(work_.data(), work_.data() + B);
     std::copy(work_.begin(), work_.begin() + B, blk);
@@ -198,7 +204,8 @@ void ModeSolver::Solve(double* b) const {
 // are kept in saved_ for Multipliers.
 void ModeSolver::EliminatedRhs(double* b) const {
   const int B = Block(), nm = nt_ * m_;
-  const auto& S = modes_->stiffness();
+  const auto& line = modes_->axis(0);
+  const auto& S = line.stiffness();
   saved_.assign(std::size_t(2) * (B + nm), 0.0);
   int slot = 0;
   for (int side = 0; side < 2; ++side) {
@@ -209,7 +216,7 @@ void ModeSolver::EliminatedRhs(double* b) const {
     std::copy(b + std::size_t(jb) * B, b + std::size_t(jb + 1) * B, keep);
     std::copy(mu, mu + nm, keep + B);
     const double* col = keep + B;  // δφ(i, j_b, a)
-    for (int j = modes_->first(); j < modes_->first() + modes_->count(); ++j) {
+    for (int j = line.first(); j < line.first() + line.count(); ++j) {
       const double sj = S(j, jb);
       if (sj == 0) continue;
       double* blk = b + std::size_t(j) * B;
@@ -229,7 +236,7 @@ void ModeSolver::EliminatedRhs(double* b) const {
 // left is Hᵗ_i μ_i (field_boundary.h).
 void ModeSolver::Multipliers(double* b) const {
   const int B = Block(), nm = nt_ * m_;
-  const auto& S = modes_->stiffness();
+  const auto& S = modes_->axis(0).stiffness();
   for (int side = 0; side < 2; ++side) {
     if (!dirichlet_[side]) continue;
     const int jb = side == 0 ? 0 : nx_ - 1;

@@ -22,7 +22,13 @@
 // of equal s_q, each factored once. (The time factor A⁻¹B is never
 // diagonalized: it has Jordan blocks at infinity for every operator.)
 //
-// Dirichlet ends (field_boundary.h) are eliminated around (2): the boundary
+// In d dimensions Y has one column per grid point, H_x is the grid's norm
+// and S = Σ_b D_bᵀ H D_b, whose modes are the products of the axes' modes
+// (grid_modes.h) with the eigenvalue Σ_b s_{q_b}; (2) holds as it stands for
+// an isotropic density (L_xx the same for every axis).
+//
+// Dirichlet ends of a one-dimensional field (field_boundary.h) are
+// eliminated around (2): the boundary
 // column is the data's row of the right-hand side, its coupling S(j, j_b)
 // moves to the right-hand side of the other points, and the multipliers μ_i
 // follow from the boundary point's own rows afterwards. Neumann data change
@@ -40,7 +46,8 @@
 
 #include "core/linalg/banded.h"
 #include "core/sbp/regularized.h"
-#include "solvers/spacetime/spatial_modes.h"
+#include "core/sbp/space_grid.h"
+#include "solvers/spacetime/grid_modes.h"
 #include "solvers/variational/banded_lu.h"
 
 namespace vivp::spacetime {
@@ -52,13 +59,12 @@ struct DensityBlocks {
 
 class ModeSolver {
  public:
-  // The window of dt's points on dx's grid, m components; a side with
-  // Dirichlet data is eliminated. `modes` must be dx's over the points
-  // that are not Dirichlet data.
+  // The window of dt's points on the grid, m components; a side of a
+  // one-dimensional grid with Dirichlet data is eliminated. `modes` must be
+  // the grid's over the points that are not Dirichlet data.
   ModeSolver(const sbp::RegularizedOperator<double>& dt,
-             const sbp::SpaceDerivative<double>& dx, int m,
-             const bool dirichlet[2],
-             std::shared_ptr<const SpatialModes> modes);
+             const sbp::SpaceGrid<double>& grid, int m, const bool dirichlet[2],
+             std::shared_ptr<const GridModes> modes);
 
   // Builds and factors the time system of every distinct mode; false if one
   // is singular (its mode in message()).
@@ -84,7 +90,7 @@ class ModeSolver {
 
   int nt_, nx_, m_;
   bool dirichlet_[2];
-  std::shared_ptr<const SpatialModes> modes_;
+  std::shared_ptr<const GridModes> modes_;
   std::vector<double> ht_;                // Hᵗ_i
   std::vector<double> hx_;                // Hˣ_j
   std::vector<double> d_first_, d_last_;  // rows 0 and N of D, with 1/Δt

@@ -18,11 +18,13 @@
 #include <Eigen/Core>
 #include <functional>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "core/action/field_boundary.h"
+#include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
-#include "core/sbp/space.h"
+#include "core/sbp/space_grid.h"
 #include "solvers/spacetime/method_of_lines.h"
 #include "solvers/variational/predictor.h"
 
@@ -32,6 +34,7 @@ template <class Density>
 class FieldPredictor {
  public:
   static constexpr int m = Density::kDim;
+  static constexpr int d = action::SpaceDimOf<Density>();
   using State = std::vector<double>;
 
   // The data of one end of an interval at time t: g or h of component a.
@@ -42,16 +45,22 @@ class FieldPredictor {
   };
 
   // phi0, pi0: a state at which the density's form is checked (the march's
-  // initial data; method_of_lines.h). ends: the left and right ends' data.
-  FieldPredictor(const Density& density, const sbp::SpaceDerivative<double>& dx,
+  // initial data; method_of_lines.h). ends: the left and right ends' data
+  // of a one-dimensional field.
+  FieldPredictor(const Density& density, const sbp::SpaceGrid<double>& grid,
                  std::span<const double> phi0, std::span<const double> pi0,
                  const End ends[2] = nullptr)
       : density_(density),
-        dx_(dx),
-        n_(std::size_t(dx.points()) * m),
-        acceleration_(density, dx, phi0, pi0),
+        grid_(grid),
+        n_(std::size_t(grid.points()) * m),
+        acceleration_(density, grid, phi0, pi0),
         acc_(n_),
         work_(n_) {
+    if (ends && d > 1 &&
+        (ends[0].kind != action::BoundaryKind::kNatural ||
+         ends[1].kind != action::BoundaryKind::kNatural))
+      throw std::invalid_argument(
+          "boundary data are built for one spatial dimension only");
     if (ends) {
       ends_[0] = ends[0];
       ends_[1] = ends[1];
@@ -104,23 +113,24 @@ class FieldPredictor {
   // ∂ℒ/∂φ_t at each point of the slice (φ, φ_t): the momentum density, the
   // continuum value of −λ3 at a window's end (the Newton start of λ3).
   void Momentum(const double* phi, const double* phi_t, double* p) const {
-    phi_x_.resize(n_);
-    dx_.ApplyComponents(m, std::span<const double>(phi, n_), phi_x_);
+    phi_x_.resize(n_ * d);
+    grid_.Gradient<double>(m, std::span<const double>(phi, n_), phi_x_,
+                           gradient_work_);
     auto call = [&](const auto* w) { return density_(w, w + m, w + 2 * m); };
     for (std::size_t j = 0; j < n_ / m; ++j) {
-      double z[3 * m];
+      double z[(2 + d) * m];
       for (int a = 0; a < m; ++a) {
         z[a] = phi[j * m + a];
         z[m + a] = phi_t[j * m + a];
-        z[2 * m + a] = phi_x_[j * m + a];
       }
-      const auto g = autodiff::Gradient<double, 3 * m>(call, z).second;
+      for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x_[j * d * m + k];
+      const auto g = autodiff::Gradient<double, (2 + d) * m>(call, z).second;
       for (int a = 0; a < m; ++a) p[j * m + a] = g[m + a];
     }
   }
 
  private:
-  int Point(int side) const { return side == 0 ? 0 : dx_.points() - 1; }
+  int Point(int side) const { return side == 0 ? 0 : grid_.points() - 1; }
 
   // φ at the Dirichlet ends set to the data at time t.
   void Dirichlet(double t, double* phi) const {
@@ -137,27 +147,28 @@ class FieldPredictor {
     auto call = [&](const auto* w) { return density_(w, w + m, w + 2 * m); };
     for (int side = 0; side < 2; ++side) {
       if (ends_[side].kind != action::BoundaryKind::kNeumann) continue;
-      double z[3 * m] = {};
+      double z[(2 + d) * m] = {};
       for (int a = 0; a < m; ++a)
         z[2 * m + a] = ends_[side].value ? ends_[side].value(t, a) : 0.0;
-      const auto g = autodiff::Gradient<double, 3 * m>(call, z).second;
+      const auto g = autodiff::Gradient<double, (2 + d) * m>(call, z).second;
       Eigen::Matrix<double, m, 1> q;
       for (int a = 0; a < m; ++a) q[a] = g[2 * m + a];
       const int j = Point(side);
       const Eigen::Matrix<double, m, 1> f =
           acceleration_.inverse_mass() * q *
-          ((side == 0 ? 1.0 : -1.0) / dx_.NormWeight(j));
+          ((side == 0 ? 1.0 : -1.0) / grid_.axis(0).NormWeight(j));
       for (int a = 0; a < m; ++a) acc[j * m + a] += f[a];
     }
   }
 
   const Density& density_;
-  const sbp::SpaceDerivative<double>& dx_;
+  const sbp::SpaceGrid<double>& grid_;
   std::size_t n_;
   FieldAcceleration<Density> acceleration_;
   mutable std::vector<double> acc_, work_;
   End ends_[2];
   mutable std::vector<double> phi_x_;
+  mutable sbp::SpaceGrid<double>::GradientWork<double> gradient_work_;
   double step_ = 0;  // last accepted step, the next run's first
 };
 

@@ -26,9 +26,11 @@
 #include <string>
 #include <vector>
 
+#include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
 #include "core/linalg/small_eigen.h"
 #include "core/sbp/space.h"
+#include "core/sbp/space_grid.h"
 
 namespace vivp::spacetime {
 
@@ -72,18 +74,34 @@ inline double SpectralRadius(const sbp::SpaceDerivative<double>& dx) {
   return std::sqrt(std::max(lambda, 0.0));
 }
 
+// On a grid of d axes the stiffness Σ_a D_aᵀ H D_a is a sum of commuting
+// terms, so its largest eigenvalue is the sum of the axes': ρ² = Σ_a ρ_a².
+inline double SpectralRadius(const sbp::SpaceGrid<double>& grid) {
+  if (grid.dim() == 1) return SpectralRadius(grid.axis(0));
+  double r2 = 0;
+  for (int a = 0; a < grid.dim(); ++a) {
+    const double r = SpectralRadius(grid.axis(a));
+    r2 += r * r;
+  }
+  return std::sqrt(r2);
+}
+
 // ω_max of the linearization about the state (φ, φ_t) on the grid; rho is
-// SpectralRadius(dx), a property of the grid computed once per solve.
+// SpectralRadius(grid), a property of the grid computed once per solve. In
+// d dimensions C is the largest of the axes' blocks −∂²L/∂(∂_bφ)², exact
+// for an isotropic density without mixed gradient blocks.
 template <class Density>
 double FastestFieldFrequency(const Density& density,
-                             const sbp::SpaceDerivative<double>& dx, double rho,
+                             const sbp::SpaceGrid<double>& grid, double rho,
                              std::span<const double> phi,
                              std::span<const double> phi_t) {
   constexpr int m = Density::kDim;
-  constexpr int K = 3 * m;
-  const int n = dx.points();
-  std::vector<double> phi_x(phi.size());
-  dx.ApplyComponents(m, phi, phi_x);
+  constexpr int d = action::SpaceDimOf<Density>();
+  constexpr int K = (2 + d) * m;
+  const int n = grid.points();
+  std::vector<double> phi_x(phi.size() * d);
+  sbp::SpaceGrid<double>::GradientWork<double> work;
+  grid.Gradient<double>(m, phi, phi_x, work);
   double omega2 = 0;
   // One component: the eigenvalues are quotients; more: the small dense
   // solver (its allocations were a tenth of this check's time for m = 1).
@@ -93,26 +111,42 @@ double FastestFieldFrequency(const Density& density,
     for (int a = 0; a < m; ++a) {
       z[a] = phi[j * m + a];
       z[m + a] = phi_t[j * m + a];
-      z[2 * m + a] = phi_x[j * m + a];
     }
+    for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x[j * d * m + k];
     const auto h = autodiff::Hessian<double, K>(
         [&](const auto* w) { return density(w, w + m, w + 2 * m); }, z);
     double wc, wk;
     if constexpr (m == 1) {
       // As LargestGeneralizedEigenvalue: the largest of 0 and the quotient.
       const double mj = h.hessian(1, 1);
-      wc = mj != 0 ? std::max(0.0, -h.hessian(2, 2) / mj) : 0.0;
+      double cmax = -h.hessian(2, 2);
+      for (int b = 1; b < d; ++b)
+        cmax = std::max(cmax, -h.hessian(2 + b, 2 + b));
+      wc = mj != 0 ? std::max(0.0, cmax / mj) : 0.0;
       wk = mj != 0 ? std::max(0.0, -h.hessian(0, 0) / mj) : 0.0;
     } else {
       mass = h.hessian.template block<m, m>(m, m);
-      c = -h.hessian.template block<m, m>(2 * m, 2 * m);
       k = -h.hessian.template block<m, m>(0, 0);
-      wc = linalg::LargestGeneralizedEigenvalue(c, mass);
+      wc = 0;
+      for (int b = 0; b < d; ++b) {
+        c = -h.hessian.template block<m, m>((2 + b) * m, (2 + b) * m);
+        wc = std::max(wc, linalg::LargestGeneralizedEigenvalue(c, mass));
+      }
       wk = linalg::LargestGeneralizedEigenvalue(k, mass);
     }
     omega2 = std::max(omega2, std::max(wc, 0.0) * rho * rho + wk);
   }
   return std::sqrt(std::max(omega2, 0.0));
+}
+
+// The one-dimensional field's grid.
+template <class Density>
+double FastestFieldFrequency(const Density& density,
+                             const sbp::SpaceDerivative<double>& dx, double rho,
+                             std::span<const double> phi,
+                             std::span<const double> phi_t) {
+  return FastestFieldFrequency(density, sbp::SpaceGrid<double>(dx), rho, phi,
+                               phi_t);
 }
 
 // Why Δt·ω at time t is beyond the time operator's limit (empty if it is

@@ -8,6 +8,16 @@
 //   auto s = vivp::spacetime::SolveField(density, dx, grid, phi0, pi0);
 //   // s.phi: every kept slice, value (slice·Nx + j)·m + a
 //
+// In d = 2 or 3 spatial dimensions the density declares kSpaceDim and the
+// space is a grid of one derivative per axis (core/sbp/space_grid.h):
+//
+//   vivp::fields::SineGordonIn<2> density;
+//   vivp::sbp::SpaceGrid<double> space({
+//       vivp::sbp::SpaceDerivative<double>::Periodic(8, 64, -16, 16),
+//       vivp::sbp::SpaceDerivative<double>::Periodic(8, 64, -16, 16)});
+//   auto s = vivp::spacetime::SolveField(density, space, grid, phi0, pi0);
+//   // s.phi: value (slice·N + j)·m + a, j the grid's flat index
+//
 // On an interval the ends may carry data (core/action/field_boundary.h):
 //
 //   vivp::spacetime::FieldSolveOptions o;
@@ -132,19 +142,15 @@ struct FieldSolution {
 
 template <class Density>
 FieldSolution SolveField(const Density& density,
-                         const sbp::SpaceDerivative<double>& dx,
+                         const sbp::SpaceGrid<double>& space,
                          const FieldGrid& grid, std::vector<double> phi0,
                          std::vector<double> pi0,
                          const FieldSolveOptions& options = {}) {
   constexpr int m = Density::kDim;
-  static_assert(action::SpaceDimOf<Density>() == 1,
-                "SolveField marches fields of one spatial axis; a density of "
-                "more (kSpaceDim > 1) has its discrete action "
-                "(action::FieldSystem on an sbp::SpaceGrid) but no march yet");
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   FieldSolution s;
-  s.nx = dx.points();
+  s.nx = space.points();
   s.components = m;
   const bool adaptive = options.tolerance.enabled();
   const auto& table = sbp::Table(grid.op);
@@ -152,7 +158,19 @@ FieldSolution SolveField(const Density& density,
     throw std::invalid_argument(
         grid.op + " needs at least " + std::to_string(table.min_points) +
         " time points, got " + std::to_string(grid.points));
-  CheckFieldInput(grid.t_end, dx, m, phi0, pi0);
+  CheckFieldInput(grid.t_end, space, m, phi0, pi0);
+  if (space.dim() != action::SpaceDimOf<Density>())
+    throw std::invalid_argument("the density has " +
+                                std::to_string(action::SpaceDimOf<Density>()) +
+                                " spatial dimensions, the grid " +
+                                std::to_string(space.dim()) + " axes");
+  if (space.dim() > 1 &&
+      (options.boundary.left.kind != action::BoundaryKind::kNatural ||
+       options.boundary.right.kind != action::BoundaryKind::kNatural))
+    throw std::invalid_argument(
+        "boundary data are built for one spatial dimension only; in " +
+        std::to_string(space.dim()) +
+        " the faces of an interval axis keep the natural condition");
   const variational::Tolerance& tol = options.tolerance;
   if (adaptive &&
       !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&
@@ -173,14 +191,14 @@ FieldSolution SolveField(const Density& density,
             : grid.points;
     const sbp::RegularizedOperator<double> first(
         sbp::MakeOperator<double>(grid.op, w, 0.0, s.dt * double(w - 1)));
-    action::FieldSystem<Density> sys(density, first, dx, phi0, pi0);
+    action::FieldSystem<Density> sys(density, first, space, phi0, pi0);
     detail::SetBoundaryData(sys, options.boundary, 0.0, s.dt);
   }
   // Then the initial state: a grid too coarse for it is refused with the
   // number of points it needs, before any work.
   if (options.check_resolution && !adaptive) {
     const double omega =
-        FastestFieldFrequency(density, dx, SpectralRadius(dx), phi0, pi0);
+        FastestFieldFrequency(density, space, SpectralRadius(space), phi0, pi0);
     s.omega_dt = s.dt * omega;
     s.status.reason =
         UnderResolved(grid.op, s.limit, s.dt, omega, 0.0, grid.t_end);
@@ -195,7 +213,7 @@ FieldSolution SolveField(const Density& density,
   const FieldWindowOptions wo{options.newton,           options.linear,
                               options.sparse,           options.boundary,
                               options.check_resolution, grid.t_end};
-  FieldWindow<Density> window(density, dx, grid.op, wo, phi0, pi0);
+  FieldWindow<Density> window(density, space, grid.op, wo, phi0, pi0);
   s.unchecked = window.unchecked();
   variational::MarchOptions mo;
   const long long all = adaptive ? 0 : grid.points;
@@ -295,6 +313,17 @@ FieldSolution SolveField(const Density& density,
   s.status.seconds = s.seconds_total;
   s.status.last_residual = ok ? s.residual_norm : out.last_residual;
   return s;
+}
+
+// A field of one spatial axis.
+template <class Density>
+FieldSolution SolveField(const Density& density,
+                         const sbp::SpaceDerivative<double>& dx,
+                         const FieldGrid& grid, std::vector<double> phi0,
+                         std::vector<double> pi0,
+                         const FieldSolveOptions& options = {}) {
+  return SolveField(density, sbp::SpaceGrid<double>(dx), grid, std::move(phi0),
+                    std::move(pi0), options);
 }
 
 }  // namespace vivp::spacetime

@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,9 +29,9 @@
 #include "core/action/field_system.h"
 #include "solvers/spacetime/assembly.h"
 #include "solvers/spacetime/density_blocks.h"
+#include "solvers/spacetime/grid_modes.h"
 #include "solvers/spacetime/mode_solver.h"
 #include "solvers/spacetime/sparse_lu.h"
-#include "solvers/spacetime/spatial_modes.h"
 
 namespace vivp::spacetime {
 
@@ -96,7 +97,7 @@ class ModesSolver {
                        SparseSolver fallback = SparseSolver::kUmfpack)
       : constant_(HasConstantBlocks(density)), lu_(fallback) {
     if (constant_) {
-      const double z[3 * m] = {};
+      const double z[System::K] = {};
       blocks_ = BlocksAt(density, z);
     }
   }
@@ -121,18 +122,25 @@ class ModesSolver {
         dirichlet[0] != dirichlet_[0] || dirichlet[1] != dirichlet_[1]) {
       if (!spatial_ || dirichlet[0] != dirichlet_[0] ||
           dirichlet[1] != dirichlet_[1]) {
-        const int nx = system.space_points();
-        spatial_ = std::make_shared<const SpatialModes>(
-            system.space_operator(), dirichlet[0] ? 1 : 0,
-            nx - int(dirichlet[0]) - int(dirichlet[1]));
+        const auto& grid = system.space_grid();
+        if (grid.dim() == 1) {
+          // Dirichlet ends are not unknowns of the spatial system.
+          const int first = dirichlet[0] ? 1 : 0;
+          const int count =
+              grid.points() - int(dirichlet[0]) - int(dirichlet[1]);
+          spatial_ = std::make_shared<const GridModes>(
+              grid, std::span<const int>(&first, 1),
+              std::span<const int>(&count, 1));
+        } else {
+          spatial_ = std::make_shared<const GridModes>(grid);
+        }
       }
       dirichlet_[0] = dirichlet[0];
       dirichlet_[1] = dirichlet[1];
       dt_ = D.dt();
       if (modes_) retired_ += modes_->factorizations();
-      modes_ = std::make_unique<ModeSolver>(system.time_operator(),
-                                            system.space_operator(), m,
-                                            dirichlet_, spatial_);
+      modes_ = std::make_unique<ModeSolver>(
+          system.time_operator(), system.space_grid(), m, dirichlet_, spatial_);
       factored_ = false;
       valid = false;
     }
@@ -192,7 +200,7 @@ class ModesSolver {
 
   bool constant_;
   DensityBlocks blocks_;
-  std::shared_ptr<const SpatialModes> spatial_;
+  std::shared_ptr<const GridModes> spatial_;
   std::unique_ptr<ModeSolver> modes_;
   bool dirichlet_[2] = {false, false};
   double dt_ = 0;
