@@ -23,10 +23,6 @@
 // Usage: fields_bench [--quick | --long-run | --profile]   (--quick: table 0
 // and the 2^18-point rows of table 1; --long-run: tables 2 and 3;
 // --profile: table 0)
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/timing.h"
 #include "core/action/field_charges.h"
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
@@ -120,23 +117,6 @@ Row NewtonIteration(const char* op, int nt, int nx, int w,
     if (row.windows == 1) row.factor_nnz = lu.FactorNonzeros();
   }
   return row;
-}
-
-// Runs f in a child process and returns its peak resident memory in MB
-// (the parent's own peak would carry over from row to row).
-template <class F>
-double InChild(F&& f) {
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    f();
-    std::fflush(stdout);
-    _exit(0);
-  }
-  int status = 0;
-  struct rusage usage {};
-  wait4(pid, &status, 0, &usage);
-  return usage.ru_maxrss / 1024.0;
 }
 
 // 0. Where a march's time goes, per window linear solver.
@@ -232,7 +212,7 @@ void Table1(bool quick) {
     configs.insert(configs.end(), more.begin(), more.end());
   }
   for (const Config& c : configs) {
-    const double mb = InChild([&] {
+    const double mb = bench::PeakMegabytesInChild([&] {
       const Row r = NewtonIteration(c.op, c.nt, c.nx, c.w, c.solver, c.modes);
       const double total = r.residual + r.assembly + r.factor + r.solve;
       std::printf(
@@ -272,7 +252,7 @@ void Table2() {
         Config{"sbp42", 5000, 400}, Config{"gauss6", 5000, 200},
         Config{"gauss6", 5000, 400}, Config{"gauss6", 5000, 300, 30},
         Config{"gauss6", 5000, 600, 30}, Config{"sbp42", 5000, 600, 30}}) {
-    const double mb = InChild([&] {
+    const double mb = bench::PeakMegabytesInChild([&] {
       const int nx = c.nx;
       const fields::SineGordon sg;
       const fields::SineGordonBreather breather{0.5};
@@ -337,7 +317,7 @@ void Table3() {
       "windows of 16, Δt = 0.02, only the end state kept\n\n"
       "| Nt | windows | seconds | peak MB |\n|---|---|---|---|\n");
   for (const int nt : {501, 2001, 8001}) {
-    const double mb = InChild([&] {
+    const double mb = bench::PeakMegabytesInChild([&] {
       const fields::SineGordon sg;
       const auto dx =
           sbp::SpaceDerivative<double>::Periodic(8, 512, -20.0, 40.0);

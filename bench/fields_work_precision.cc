@@ -101,8 +101,7 @@ int main(int argc, char** argv) {
         "ratio |\n|---|---|---|---|---|---|---|\n");
   else
     std::printf("%-7s %5s %-22s %7s %11s %15s %6s\n", "target", "Nx",
-                "variational", "steps", "per step", "gauss4 per step",
-                "ratio");
+                "variational", "steps", "per step", "gauss4 per step", "ratio");
   for (const auto& c : r.step_costs) {
     const double ratio = c.seconds_per_step / c.gauss4_seconds_per_step;
     if (markdown)

@@ -2,8 +2,13 @@
 // descheduled run does not move the figure.
 #pragma once
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <vector>
 
 namespace vivp::bench {
@@ -26,6 +31,23 @@ double MedianSeconds(F&& run, int repeats = 7) {
 template <class T>
 void DoNotOptimize(const T& value) {
   asm volatile("" : : "r,m"(value) : "memory");
+}
+
+// Runs f in a child process and returns its peak resident memory in MB
+// (the parent's own peak would carry over from row to row).
+template <class F>
+double PeakMegabytesInChild(F&& f) {
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    f();
+    std::fflush(stdout);
+    _exit(0);
+  }
+  int status = 0;
+  struct rusage usage {};
+  wait4(pid, &status, 0, &usage);
+  return usage.ru_maxrss / 1024.0;
 }
 
 }  // namespace vivp::bench

@@ -230,8 +230,9 @@ BOOST_AUTO_TEST_CASE(a_field_constant_along_y_is_the_one_dimensional_field) {
   BOOST_TEST(diff <= 1e-12);
 }
 
-// Bad input: a grid whose axes do not match the density, boundary data in
-// two dimensions, initial data of the wrong size or not finite.
+// Bad input: a grid whose axes do not match the density, end data in two
+// dimensions, faces that do not exist or twice or with non-finite slopes,
+// initial data of the wrong size or not finite.
 BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   const Grid g = Periodic2(4, 8, 4, 8);
   std::vector<double> phi0(g.points(), 0.1), pi0(g.points(), 0.0);
@@ -243,6 +244,36 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   BOOST_CHECK_THROW(
       SolveField(vivp::fields::SineGordonIn<2>{}, g, fg, phi0, pi0, o),
       std::invalid_argument);
+  // Neumann faces: none on a periodic axis, no axis beyond the grid's, each
+  // face once.
+  for (const auto& faces :
+       {std::vector<vivp::spacetime::FieldFace>{{0, 0, {}}},
+        std::vector<vivp::spacetime::FieldFace>{{2, 1, {}}}}) {
+    FieldSolveOptions f;
+    f.boundary.faces = faces;
+    BOOST_CHECK_THROW(
+        SolveField(vivp::fields::SineGordonIn<2>{}, g, fg, phi0, pi0, f),
+        std::invalid_argument);
+  }
+  {
+    const Grid b({SpaceDerivative<double>::Bounded("sbp42", 9, 0.0, 1.0),
+                  SpaceDerivative<double>::Periodic(4, 8, 0.0, 1.0)});
+    std::vector<double> p(b.points(), 0.1), v(b.points(), 0.0);
+    FieldSolveOptions f;
+    f.boundary.faces = {{0, 1, {}}, {0, 1, {}}};
+    BOOST_CHECK_THROW(
+        SolveField(vivp::fields::SineGordonIn<2>{}, b, fg, p, v, f),
+        std::invalid_argument);
+    f.boundary.faces = {{0, 1, [](double, const double*, int) { return NAN; }}};
+    BOOST_CHECK_THROW(
+        SolveField(vivp::fields::SineGordonIn<2>{}, b, fg, p, v, f),
+        std::invalid_argument);
+    f.boundary.faces = {{0, 1, [](double, const double*, int) { return 0.0; }}};
+    const FieldGrid short_run{.op = "sbp42", .points = 9, .t_end = 0.05};
+    const auto ok =
+        SolveField(vivp::fields::SineGordonIn<2>{}, b, short_run, p, v, f);
+    BOOST_TEST(ok.status.converged, ok.status.reason);
+  }
   std::vector<double> short_phi(g.points() - 1, 0.0);
   BOOST_CHECK_THROW(
       SolveField(vivp::fields::SineGordonIn<2>{}, g, fg, short_phi, pi0),

@@ -1,10 +1,10 @@
 // Mutation test of the scene reader: the shipped scenes (field scenes
-// too) and the default scene, mutated at random — bytes deleted, inserted or flipped, lines
-// dropped, doubled or swapped, numbers and names replaced by extreme or wrong
-// ones — must each be read or rejected with a SceneError; any other
-// exception, a crash or a sanitizer report fails.
-// Mutants that read and are small are also solved, which must end in a
-// result or a clean exception, never a crash.
+// too) and the default scene, mutated at random — bytes deleted, inserted or
+// flipped, lines dropped, doubled or swapped, numbers and names replaced by
+// extreme or wrong ones — must each be read or rejected with a SceneError; any
+// other exception, a crash or a sanitizer report fails. Mutants that read and
+// are small are also solved, which must end in a result or a clean exception,
+// never a crash.
 //
 // VIVP_FUZZ_COUNT sets the number of mutants (default 3000, what CI runs);
 // the note's full run is VIVP_FUZZ_COUNT=100000 under ASan/UBSan.

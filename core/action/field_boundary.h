@@ -29,6 +29,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/autodiff/pointwise.h"
@@ -79,6 +81,37 @@ template <class System>
 bool FluxDependsOnSlopeOnly(const System& s) {
   constexpr int m = System::m;
   return s.template HessianBlockVanishes<m, 2 * m>(2 * m, 0);
+}
+
+// Why data of `kind` at `side` with `count` values cannot be set on s (a
+// one-dimensional interval takes Nt·m values per side), as an exception.
+template <class System>
+void CheckBoundary(const System& s, int side, BoundaryKind kind,
+                   std::size_t count) {
+  constexpr int m = System::m, d = System::d;
+  if (side != 0 && side != 1)
+    throw std::invalid_argument("boundary side must be 0 (left) or 1");
+  if (kind == BoundaryKind::kNatural) return;
+  if (d > 1)
+    throw std::invalid_argument(
+        std::string("a ") + BoundaryName(kind) +
+        " boundary is built for one spatial dimension only; in " +
+        std::to_string(d) +
+        " a face takes Neumann data (FieldSystem::SetFace)");
+  if (s.space_grid().axis(0).periodic())
+    throw std::invalid_argument(
+        std::string("a ") + BoundaryName(kind) +
+        " boundary needs an interval; the periodic circle has none");
+  if (count != static_cast<std::size_t>(s.time_points()) * m)
+    throw std::invalid_argument(
+        "boundary data: expected " + std::to_string(s.time_points() * m) +
+        " values (one per time node and component), got " +
+        std::to_string(count));
+  if (kind == BoundaryKind::kNeumann && !FluxDependsOnSlopeOnly(s))
+    throw std::invalid_argument(
+        "Neumann data need a density whose flux ∂L/∂φ_x depends on φ_x "
+        "alone (they enter as the flux at the prescribed slope); this one "
+        "couples φ_x to φ or φ_t");
 }
 
 // Adds the boundary data's terms to the residual f of the field system at y.

@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "core/action/field_boundary.h"
+#include "core/action/field_faces.h"
 #include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
@@ -104,28 +105,7 @@ class FieldSystem {
   // Data at side 0 (x_0) or 1 (x_{Nx−1}) (field_boundary.h); values: g or h
   // at the window's nodes, i·m + a.
   void SetBoundary(int side, BoundaryKind kind, std::vector<Real> values) {
-    if (side != 0 && side != 1)
-      throw std::invalid_argument("boundary side must be 0 (left) or 1");
-    if (kind != BoundaryKind::kNatural && d > 1)
-      throw std::invalid_argument(
-          std::string("a ") + BoundaryName(kind) +
-          " boundary is built for one spatial dimension only; in " +
-          std::to_string(d) + " the faces keep the natural condition");
-    if (kind != BoundaryKind::kNatural && grid_.axis(0).periodic())
-      throw std::invalid_argument(
-          std::string("a ") + BoundaryName(kind) +
-          " boundary needs an interval; the periodic circle has none");
-    if (kind != BoundaryKind::kNatural &&
-        values.size() != static_cast<std::size_t>(nt_) * m)
-      throw std::invalid_argument(
-          "boundary data: expected " + std::to_string(nt_ * m) +
-          " values (one per time node and component), got " +
-          std::to_string(values.size()));
-    if (kind == BoundaryKind::kNeumann && !FluxDependsOnSlopeOnly(*this))
-      throw std::invalid_argument(
-          "Neumann data need a density whose flux ∂L/∂φ_x depends on φ_x "
-          "alone (they enter as the flux at the prescribed slope); this one "
-          "couples φ_x to φ or φ_t");
+    CheckBoundary(*this, side, kind, values.size());
     boundary_[side] = {kind, std::move(values), {}};
     if (kind == BoundaryKind::kNeumann)
       boundary_[side].flux = detail::Flux(*this, boundary_[side].values);
@@ -133,6 +113,15 @@ class FieldSystem {
                    (boundary_[1].kind == BoundaryKind::kDirichlet);
   }
   const BoundarySide<Real>& boundary(int side) const { return boundary_[side]; }
+  // Neumann slopes on a face of an interval axis in d > 1 (field_faces.h):
+  // h at (node, face point, component); replaces that face's earlier data.
+  void SetFace(int axis, int side, const std::vector<Real>& slopes) {
+    std::erase_if(faces_, [&](const auto& f) {
+      return f.axis == axis && f.side == side;
+    });
+    faces_.push_back(MakeFace(*this, axis, side, slopes));
+  }
+  const std::vector<FaceData<Real>>& faces() const { return faces_; }
   // The Dirichlet multiplier μ_i of a side (field_boundary.h).
   int Mu(int side, int i, int a) const {
     const int slot =
@@ -306,6 +295,7 @@ class FieldSystem {
       }
     }
     AddBoundaryResidual(*this, y, f);
+    AddFaceResidual(*this, faces_, f);
   }
 
   // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
@@ -378,6 +368,7 @@ class FieldSystem {
   std::vector<Real> phi0_, pi0_;
   bool couples_t_x_ = false;
   BoundarySide<Real> boundary_[2];
+  std::vector<FaceData<Real>> faces_;
   int constrained_ = 0;
 
   // Work arrays reused across evaluations (not thread-safe).

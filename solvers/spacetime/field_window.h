@@ -43,7 +43,8 @@ struct FieldBoundarySide {
   std::function<double(double t, int a)> value;
 };
 struct FieldBoundary {
-  FieldBoundarySide left, right;
+  FieldBoundarySide left, right;  // the ends of one spatial axis
+  std::vector<FieldFace> faces;   // Neumann faces in d > 1 (input.h)
 };
 
 // What a field window needs besides the density and the grids.
@@ -86,6 +87,27 @@ void SetBoundaryData(System& sys, const FieldBoundary& b, double t0,
         }
     sys.SetBoundary(side, sides[side]->kind, std::move(values));
   }
+  const auto& g = sys.space_grid();
+  for (const FieldFace& face : b.faces) {
+    const auto points = action::detail::FacePoints(g, face.axis, face.side);
+    std::vector<double> slopes(std::size_t(sys.time_points()) * points.size() *
+                               m);
+    double x[3];
+    for (int i = 0; i < sys.time_points(); ++i)
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        for (int a = 0; a < g.dim(); ++a) x[a] = g.x(points[k], a);
+        for (int c = 0; c < m; ++c) {
+          double& h = slopes[(i * points.size() + k) * m + c];
+          h = face.slope ? face.slope(t0 + dt * i, x, c) : 0.0;
+          if (!std::isfinite(h))
+            throw std::invalid_argument(
+                "Neumann data of face " + std::to_string(face.side) +
+                " of axis " + std::to_string(face.axis) +
+                ": non-finite slope at t = " + std::to_string(t0 + dt * i));
+        }
+      }
+    sys.SetFace(face.axis, face.side, slopes);
+  }
 }
 
 }  // namespace detail
@@ -115,6 +137,7 @@ class FieldWindow {
         {options.boundary.right.kind, options.boundary.right.value}};
     try {
       predictor_.emplace(density, grid, phi0, pi0, ends);
+      predictor_->SetFaces(options.boundary.faces);
     } catch (const std::invalid_argument& e) {
       no_predictor_ = e.what();
     }

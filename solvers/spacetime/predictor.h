@@ -22,9 +22,11 @@
 #include <vector>
 
 #include "core/action/field_boundary.h"
+#include "core/action/field_faces.h"
 #include "core/action/field_point.h"
 #include "core/autodiff/pointwise.h"
 #include "core/sbp/space_grid.h"
+#include "solvers/spacetime/input.h"
 #include "solvers/spacetime/method_of_lines.h"
 #include "solvers/variational/predictor.h"
 
@@ -68,6 +70,15 @@ class FieldPredictor {
   }
 
   int dim() const { return int(n_); }
+  // Neumann faces of a grid of d > 1 axes (input.h): the flux term of
+  // core/action/field_faces.h adds ±M⁻¹q_a/Hᵃ to a face point's
+  // acceleration (H = H^{⊥a}Hᵃ), q_a the flux at the prescribed slope.
+  void SetFaces(std::vector<FieldFace> faces) {
+    faces_ = std::move(faces);
+    face_points_.clear();
+    for (const auto& f : faces_)
+      face_points_.push_back(action::detail::FacePoints(grid_, f.axis, f.side));
+  }
 
   // From (φ, φ_t) = (x0, v0) at τ = 0, time t0, to the nodes tau[0 …
   // count), writing φ and φ_t slice-major into x and v (count·n values
@@ -85,6 +96,7 @@ class FieldPredictor {
       Dirichlet(t0 + tau_now, work_.data());
       acceleration_(std::span<const double>(work_), std::span<double>(acc_));
       Neumann(t0 + tau_now, acc_.data());
+      Faces(t0 + tau_now, acc_.data());
       std::copy(acc_.begin(), acc_.end(), dy.begin() + n_);
       for (int side = 0; side < 2; ++side)
         if (ends_[side].kind == action::BoundaryKind::kDirichlet)
@@ -161,12 +173,38 @@ class FieldPredictor {
     }
   }
 
+  void Faces(double t, double* acc) const {
+    auto call = [&](const auto* w) { return density_(w, w + m, w + 2 * m); };
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      const FieldFace& face = faces_[f];
+      const int col = (2 + face.axis) * m;
+      const double sign = face.side == 0 ? 1.0 : -1.0;
+      const auto& axis = grid_.axis(face.axis);
+      double x[3] = {};
+      for (int j : face_points_[f]) {
+        for (int a = 0; a < grid_.dim(); ++a) x[a] = grid_.x(j, a);
+        double z[(2 + d) * m] = {};
+        for (int c = 0; c < m; ++c)
+          z[col + c] = face.slope ? face.slope(t, x, c) : 0.0;
+        const auto g = autodiff::Gradient<double, (2 + d) * m>(call, z).second;
+        Eigen::Matrix<double, m, 1> q;
+        for (int c = 0; c < m; ++c) q[c] = g[col + c];
+        const Eigen::Matrix<double, m, 1> add =
+            acceleration_.inverse_mass() * q *
+            (sign / axis.NormWeight(grid_.Coordinate(j, face.axis)));
+        for (int c = 0; c < m; ++c) acc[j * m + c] += add[c];
+      }
+    }
+  }
+
   const Density& density_;
   const sbp::SpaceGrid<double>& grid_;
   std::size_t n_;
   FieldAcceleration<Density> acceleration_;
   mutable std::vector<double> acc_, work_;
   End ends_[2];
+  std::vector<FieldFace> faces_;
+  std::vector<std::vector<int>> face_points_;
   mutable std::vector<double> phi_x_;
   mutable sbp::SpaceGrid<double>::GradientWork<double> gradient_work_;
   double step_ = 0;  // last accepted step, the next run's first

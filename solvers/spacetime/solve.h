@@ -168,9 +168,10 @@ FieldSolution SolveField(const Density& density,
       (options.boundary.left.kind != action::BoundaryKind::kNatural ||
        options.boundary.right.kind != action::BoundaryKind::kNatural))
     throw std::invalid_argument(
-        "boundary data are built for one spatial dimension only; in " +
-        std::to_string(space.dim()) +
-        " the faces of an interval axis keep the natural condition");
+        "boundary data at the ends (left, right) are for one spatial "
+        "dimension; in " +
+        std::to_string(space.dim()) + " give Neumann data per face (faces)");
+  CheckFaces(space, options.boundary.faces);
   const variational::Tolerance& tol = options.tolerance;
   if (adaptive &&
       !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&
