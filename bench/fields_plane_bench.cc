@@ -8,16 +8,17 @@
 //    (Δt = 0.02) with the space-diagonalized solve: residual, Hessian
 //    blocks, factorization of every distinct mode's time system, one solve;
 //    peak memory of the run.
-// 2. (--ring N T [W]) The ring marched to T on N² points, SBP42 in windows
-//    of W (16) at 0.9 of the resolution limit: time, Newton iterations,
-//    fallbacks, microseconds per site and time step, peak memory, energy at 0
-//    and T.
+// 2. (--ring N T [W [F]]) The ring marched to T on N² points, SBP42 in
+//    windows of W (16) at F (0.9) of the resolution limit: time, Newton
+//    iterations, fallbacks, microseconds per site and time step, peak memory,
+//    energy at 0 and T.
 // 3. (--compare) Work at equal error on 64² points to t = 2 against the
 //    method of lines on the same spatial operator (leapfrog, Gauss4): the
 //    error of φ at t = 2 against a Gauss6 run of 4096 steps (time error
 //    only), seconds and nanoseconds per site and step.
 //
-// Usage: fields_plane_bench [--ring N T [W]] [--compare]   (default: table 1)
+// Usage: fields_plane_bench [--ring N T [W [F]]] [--compare]   (default: table
+// 1)
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -106,14 +107,14 @@ void Table1() {
   std::printf("\n");
 }
 
-void Ring(int n, double t_end, int w) {
+void Ring(int n, double t_end, int w, double fraction) {
   std::printf(
       "Sine-Gordon ring on %d² points to t = %g (SBP42, windows of %d, Δt at\n"
-      "0.9 of the resolution limit)\n\n"
+      "%g of the resolution limit)\n\n"
       "| time points | Δt | windows | Newton its | fallbacks | seconds | "
       "μs per site·step | E(0) | E(T) | converged |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n",
-      n, t_end, w);
+      n, t_end, w, fraction);
   const double mb = bench::PeakMegabytesInChild([&] {
     const Density density;
     const Grid g = RingGrid(n);
@@ -122,7 +123,7 @@ void Ring(int n, double t_end, int w) {
     const double omega = spacetime::FastestFieldFrequency(
         density, g, spacetime::SpectralRadius(g), phi0, pi0);
     const long long nt =
-        (static_cast<long long>(std::ceil(t_end * omega / 0.9 / (w - 1))) *
+        (static_cast<long long>(std::ceil(t_end * omega / fraction / (w - 1))) *
          (w - 1)) +
         1;
     spacetime::FieldSolveOptions o;
@@ -219,13 +220,14 @@ int main(int argc, char** argv) {
     const int n = argc >= 3 ? std::atoi(argv[2]) : 512;
     const double t = argc >= 4 ? std::atof(argv[3]) : 50.0;
     const int w = argc >= 5 ? std::atoi(argv[4]) : 16;
-    if (n < 8 || !(t > 0) || w < 6) {
+    const double f = argc >= 6 ? std::atof(argv[5]) : 0.9;
+    if (n < 8 || !(t > 0) || w < 8 || !(f > 0 && f <= 1)) {
       std::fprintf(stderr,
-                   "fields_plane_bench: --ring N T [W] needs N ≥ 8, T > 0 and "
-                   "W ≥ 6\n");
+                   "fields_plane_bench: --ring N T [W [F]] needs N ≥ 8, T > 0, "
+                   "W ≥ 8 and 0 < F ≤ 1\n");
       return 2;
     }
-    Ring(n, t, w);
+    Ring(n, t, w, f);
     return 0;
   }
   if (argc >= 2 && std::strcmp(argv[1], "--compare") == 0) {
@@ -233,8 +235,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc >= 2) {
-    std::fprintf(stderr,
-                 "usage: fields_plane_bench [--ring N T [W]] [--compare]\n");
+    std::fprintf(
+        stderr, "usage: fields_plane_bench [--ring N T [W [F]]] [--compare]\n");
     return 2;
   }
   Table1();

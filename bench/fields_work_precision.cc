@@ -21,6 +21,33 @@ void Print(const std::string& line) {
   std::fprintf(stderr, "  %s\n", line.c_str());
 }
 
+// The second table: a window's cost per time step against Gauss4's.
+void PrintStepCosts(const vivp::studies::FieldWorkReport& r, bool markdown) {
+  std::printf(
+      "\nA window's cost per time step against one Gauss4 step at the same "
+      "Δt on the same grid:\n\n");
+  if (markdown)
+    std::printf(
+        "| target | Nx | variational | steps | per step | gauss4 per step | "
+        "ratio |\n|---|---|---|---|---|---|---|\n");
+  else
+    std::printf("%-7s %5s %-22s %7s %11s %15s %6s\n", "target", "Nx",
+                "variational", "steps", "per step", "gauss4 per step", "ratio");
+  for (const auto& c : r.step_costs) {
+    const double ratio = c.seconds_per_step / c.gauss4_seconds_per_step;
+    if (markdown)
+      std::printf("| %.0e | %d | %s | %lld | %.1f µs | %.1f µs%s | %.1f |\n",
+                  c.target, c.space_points, c.config.c_str(), c.steps,
+                  1e6 * c.seconds_per_step, 1e6 * c.gauss4_seconds_per_step,
+                  c.gauss4_converged ? "" : " (not converged)", ratio);
+    else
+      std::printf("%-7.0e %5d %-22s %7lld %8.1f µs %12.1f µs%s %6.1f\n",
+                  c.target, c.space_points, c.config.c_str(), c.steps,
+                  1e6 * c.seconds_per_step, 1e6 * c.gauss4_seconds_per_step,
+                  c.gauss4_converged ? "" : " (not converged)", ratio);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -92,28 +119,6 @@ int main(int argc, char** argv) {
                   b.found ? err : "—", b.found ? sec : "—",
                   b.found ? ratio : "—");
   }
-  std::printf(
-      "\nA window's cost per time step against one Gauss4 step at the same "
-      "Δt on the same grid:\n\n");
-  if (markdown)
-    std::printf(
-        "| target | Nx | variational | steps | per step | gauss4 per step | "
-        "ratio |\n|---|---|---|---|---|---|---|\n");
-  else
-    std::printf("%-7s %5s %-22s %7s %11s %15s %6s\n", "target", "Nx",
-                "variational", "steps", "per step", "gauss4 per step", "ratio");
-  for (const auto& c : r.step_costs) {
-    const double ratio = c.seconds_per_step / c.gauss4_seconds_per_step;
-    if (markdown)
-      std::printf("| %.0e | %d | %s | %lld | %.1f µs | %.1f µs%s | %.1f |\n",
-                  c.target, c.space_points, c.config.c_str(), c.steps,
-                  1e6 * c.seconds_per_step, 1e6 * c.gauss4_seconds_per_step,
-                  c.gauss4_converged ? "" : " (not converged)", ratio);
-    else
-      std::printf("%-7.0e %5d %-22s %7lld %8.1f µs %12.1f µs%s %6.1f\n",
-                  c.target, c.space_points, c.config.c_str(), c.steps,
-                  1e6 * c.seconds_per_step, 1e6 * c.gauss4_seconds_per_step,
-                  c.gauss4_converged ? "" : " (not converged)", ratio);
-  }
+  PrintStepCosts(r, markdown);
   return 0;
 }
