@@ -47,6 +47,16 @@ struct FieldBoundary {
   std::vector<FieldFace> faces;   // Neumann faces in d > 1 (input.h)
 };
 
+// What carries from one field window to the next besides the hand-off
+// state (FieldWindow::Save): the time operator's points and step (kept
+// while the step stays within 64 ε), the predictor's first step, the mode
+// solve's factorization.
+struct FieldWindowCarry {
+  int points = 0;
+  double dt = 0, predictor_step = 0;
+  ModesSnapshot modes;
+};
+
 // What a field window needs besides the density and the grids.
 struct FieldWindowOptions {
   variational::NewtonOptions newton;
@@ -325,6 +335,21 @@ class FieldWindow {
     for (double v : f)
       worst = std::isfinite(v) ? std::max(worst, std::abs(v)) : NAN;
     a.residual = worst;
+  }
+
+  // What carries from one window to the next besides the hand-off state —
+  // the time operator's step, the predictor's first step, the mode solve's
+  // factorization — so that a march resumed from a checkpoint repeats the
+  // uninterrupted one bit for bit.
+  using Carry = FieldWindowCarry;
+  Carry Save() const {
+    return {dbar_ ? dbar_->points() : 0, dt_,
+            predictor_ ? predictor_->first_step() : 0.0, modes_.Save()};
+  }
+  void Restore(const Carry& c) {
+    if (c.points > 0) Operators(c.points, c.dt);
+    if (predictor_) predictor_->set_first_step(c.predictor_step);
+    modes_.Restore(c.modes);
   }
 
   bool ReusesFactorizations() const { return true; }

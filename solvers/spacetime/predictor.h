@@ -70,6 +70,10 @@ class FieldPredictor {
   }
 
   int dim() const { return int(n_); }
+  // The first step of the next run (the last accepted one): part of a
+  // checkpoint (solve.h).
+  double first_step() const { return step_; }
+  void set_first_step(double h) { step_ = h; }
   // Neumann faces of a grid of d > 1 axes (input.h): the flux term of
   // core/action/field_faces.h adds ±M⁻¹q_a/Hᵃ to a face point's
   // acceleration (H = H^{⊥a}Hᵃ), q_a the flux at the prescribed slope.

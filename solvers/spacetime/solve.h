@@ -53,6 +53,7 @@
 #include <vector>
 
 #include "core/sbp/builder.h"
+#include "solvers/spacetime/checkpoint.h"
 #include "solvers/spacetime/end_state.h"
 #include "solvers/spacetime/field_window.h"
 #include "solvers/spacetime/input.h"
@@ -95,6 +96,12 @@ struct FieldSolveOptions {
   // (0 under error control, where it is not known) and the time reached (a
   // progress line; it runs on the solving thread).
   std::function<void(int done, int total, double t)> on_window;
+  // A uniform march: called at every window boundary with the checkpoint
+  // there (checkpoint.h), and a checkpoint to resume from — the fields are
+  // then those of the uninterrupted march, bit for bit, from its node on
+  // (φ0 and π0 are not used; the kept slices start at the checkpoint).
+  std::function<void(const FieldCheckpoint&)> on_checkpoint;
+  const FieldCheckpoint* resume = nullptr;
 };
 
 struct FieldSolution {
@@ -153,6 +160,14 @@ FieldSolution SolveField(const Density& density,
   s.nx = space.points();
   s.components = m;
   const bool adaptive = options.tolerance.enabled();
+  if (adaptive && (options.on_checkpoint || options.resume))
+    throw std::invalid_argument(
+        "checkpoints are taken of uniform marches; an error-controlled march "
+        "(a tolerance) has a step controller whose history they do not keep");
+  if (options.resume) {
+    phi0 = options.resume->phi;
+    pi0 = options.resume->phi_t;
+  }
   const auto& table = sbp::Table(grid.op);
   if (!adaptive && grid.points < table.min_points)
     throw std::invalid_argument(
@@ -240,6 +255,22 @@ FieldSolution SolveField(const Density& density,
                         : int((grid.points - 1 + mo.window_points - 2) /
                               std::max<long long>(mo.window_points - 1, 1));
   int done = 0;
+  if (options.resume) {
+    const std::string why = CannotResume(*options.resume, grid.op, grid.points,
+                                         mo.window_points, grid.t_end, s.nx, m);
+    if (!why.empty()) throw std::invalid_argument(why);
+    window.Restore(options.resume->carry);
+    mo.start_node = options.resume->node;
+    done = options.resume->windows;
+  }
+  if (options.on_checkpoint)
+    mo.at_boundary = [&](long long node, const variational::InitialData& x) {
+      FieldCheckpoint c{
+          grid.op, grid.points,  mo.window_points,    grid.t_end, s.nx,
+          m,       node,         s.dt * double(node), x.x,        x.v,
+          done,    window.Save()};
+      options.on_checkpoint(c);
+    };
   mo.window_observer = [&](const variational::WindowSample& w) {
     ++done;
     // The window's nodes but its last are kept; its last is the next one

@@ -85,6 +85,14 @@ class SparseLuSolver {
   mutable Eigen::VectorXd rhs_, x_;
 };
 
+// What a ModesSolver hands from one window to the next: the blocks of the
+// held factorization, whether it is factored, and whether Newton may start
+// on it (part of a checkpoint, checkpoint.h).
+struct ModesSnapshot {
+  DensityBlocks blocks;
+  bool factored = false, valid = false;
+};
+
 template <class Density>
 class ModesSolver {
  public:
@@ -104,6 +112,19 @@ class ModesSolver {
 
   bool valid = false;
   long long fallbacks = 0;  // windows that needed the sparse LU
+
+  // What the next window's Newton starts from (ModesSnapshot). Restore
+  // refactors the same blocks when the next window's modes are built, so a
+  // resumed march is bit-identical.
+  using Snapshot = ModesSnapshot;
+  Snapshot Save() const {
+    return {blocks_, factored_, use_lu_ ? factored_ : valid};
+  }
+  void Restore(const Snapshot& s) {
+    blocks_ = s.blocks;
+    restored_ = s;
+    restore_ = true;
+  }
 
   void Invalidate() {
     valid = false;
@@ -143,6 +164,11 @@ class ModesSolver {
           system.time_operator(), system.space_grid(), m, dirichlet_, spatial_);
       factored_ = false;
       valid = false;
+      if (restore_) {
+        factored_ = restored_.factored && modes_->Factor(blocks_);
+        valid = factored_ && restored_.valid;
+        restore_ = false;
+      }
     }
     if (use_lu_) {
       // Back to the spectral solve after a window that fell back.
@@ -200,6 +226,8 @@ class ModesSolver {
 
   bool constant_;
   DensityBlocks blocks_;
+  Snapshot restored_;
+  bool restore_ = false;
   std::shared_ptr<const GridModes> spatial_;
   std::unique_ptr<ModeSolver> modes_;
   bool dirichlet_[2] = {false, false};

@@ -64,6 +64,12 @@ struct MarchOptions {
   double max_relative_deviation = 1e-2;
   // Sees every accepted window (studies of the error estimates).
   WindowObserver window_observer;
+  // Uniform grid: resume at this node of the grid (the state given to Run is
+  // the hand-off state there, which at_boundary reported), and see the
+  // march's state after every window of window_points, never inside a split
+  // one: where a march can be stopped and resumed.
+  long long start_node = 0;
+  std::function<void(long long node, const InitialData &state)> at_boundary;
 };
 
 struct WindowReport {

@@ -22,7 +22,7 @@ class UniformMarch : public MarchCore<WindowT> {
     Refine(state, false);  // planned from the initial state, not a fallback
     const long long intervals = grid_.points - 1;
     const long long per_window = options_.window_points - 1;
-    long long done = 0;
+    long long done = options_.start_node;
     while (done < intervals) {
       long long take = std::min(per_window, intervals - done);
       // Never leave a remainder shorter than the operator allows: absorb it.
@@ -32,6 +32,8 @@ class UniformMarch : public MarchCore<WindowT> {
       if (!Window(state, done, take + 1, 0, done + take == intervals))
         return false;
       done += take;
+      if (options_.at_boundary && done < intervals)
+        options_.at_boundary(done, state);
     }
     return true;
   }
