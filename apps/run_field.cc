@@ -206,7 +206,7 @@ scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
              << s.t_end << "), ";
         return line.str();
       },
-      !quiet);
+      !quiet, [&] { return s.t_end > 0 ? reached.load() / s.t_end : 0.0; });
   return scene::RunFieldScene(s, [&](int d, int n, double t) {
     done = d;
     total = n;

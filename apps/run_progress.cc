@@ -21,10 +21,11 @@ ProgressLine::ProgressLine(const FileSink& sink, double t_start, double t_end,
                  << t_start + f * (t_end - t_start) << " of " << t_end << "), ";
             return line.str();
           },
-          show) {}
+          show, [&sink] { return sink.fraction(); }) {}
 
-ProgressLine::ProgressLine(std::function<std::string()> status, bool show)
-    : status_(std::move(status)) {
+ProgressLine::ProgressLine(std::function<std::string()> status, bool show,
+                           std::function<double()> fraction)
+    : status_(std::move(status)), fraction_(std::move(fraction)) {
   if (show && isatty(STDERR_FILENO)) thread_ = std::thread([this] { Loop(); });
 }
 
@@ -51,6 +52,10 @@ void ProgressLine::Loop() {
     std::ostringstream line;
     line << "\r\033[Kvivp: " << (status.empty() ? "solving, " : status);
     line << std::fixed << std::setprecision(1) << seconds << " s";
+    const double f = fraction_ ? fraction_() : 0.0;
+    if (f >= 0.02 && f < 1)
+      line << ", about " << std::setprecision(0) << seconds * (1 - f) / f
+           << " s left";
     std::cerr << line.str() << std::flush;
     printed_ = true;
   } while (!wake_.wait_for(lock, std::chrono::milliseconds(500),

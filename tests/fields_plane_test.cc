@@ -13,6 +13,7 @@
 
 #include "problems/fields/densities.h"
 #include "problems/fields/exact.h"
+#include "solvers/spacetime/power_spectrum.h"
 #include "solvers/spacetime/solve.h"
 
 namespace {
@@ -329,4 +330,38 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
     BOOST_TEST_MESSAGE(e.what());
     BOOST_TEST(std::string(e.what()).find("(x, y) = (") != std::string::npos);
   }
+}
+
+// The power spectrum of a slice (power_spectrum.h): the plane wave
+// cos(x + 2y) on the periodic [0, 2π)² (16² points) puts all its power in
+// the bin of |k| = √5, and the bins sum to the slice's mean square
+// (Parseval); a grid with an interval axis is refused.
+BOOST_AUTO_TEST_CASE(power_spectrum_of_a_plane_wave) {
+  const Grid g = Periodic2(4, 16, 4, 16);
+  std::vector<double> phi(2 * g.points());
+  double mean_square = 0;
+  for (int j = 0; j < g.points(); ++j) {
+    phi[2 * j] = std::cos(g.x(j, 0) + 2 * g.x(j, 1));
+    phi[2 * j + 1] = 1.0;  // the other component: constant
+    mean_square += phi[2 * j] * phi[2 * j] / g.points();
+  }
+  const auto bins = vivp::spacetime::PowerSpectrum(g, phi, 2, 0);
+  double total = 0, at = 0;
+  for (const auto& b : bins) {
+    total += b.power;
+    if (std::abs(b.k - std::sqrt(5.0)) <= 0.5) at += b.power;
+  }
+  BOOST_TEST_MESSAGE("power " << total << " (mean square " << mean_square
+                              << "), in the bin of √5 " << at);
+  BOOST_TEST(std::abs(total - mean_square) <= 1e-14);
+  BOOST_TEST(std::abs(at - 0.5) <= 1e-14);
+  const auto flat = vivp::spacetime::PowerSpectrum(g, phi, 2, 1);
+  BOOST_TEST(std::abs(flat[0].power - 1.0) <= 1e-14);
+  const Grid bounded({SpaceDerivative<double>::Bounded("sbp42", 9, 0.0, 1.0),
+                      SpaceDerivative<double>::Periodic(4, 8, 0.0, 1.0)});
+  std::vector<double> b(bounded.points(), 0.0);
+  BOOST_CHECK_THROW(vivp::spacetime::PowerSpectrum(bounded, b),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(vivp::spacetime::PowerSpectrum(g, phi, 1),
+                    std::invalid_argument);
 }
