@@ -9,7 +9,7 @@ packages=(
   libboost-dev libboost-test-dev libboost-iostreams-dev libboost-system-dev libboost-filesystem-dev
   liblapack-dev libgnuplot-iostream-dev gnuplot-nox
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libginac-dev
-  libsuitesparse-dev libfftw3-dev
+  libsuitesparse-dev libfftw3-dev libhdf5-dev hdf5-tools
 )
 
 missing=()
