@@ -12,6 +12,16 @@
 
 namespace vivp::spacetime {
 
+// Where grid point j is, for a message: "x = …" on one axis, "(x, y) = (…)"
+// on two, "(x, y, z) = (…)" on three.
+inline std::string PointName(const sbp::SpaceGrid<double>& grid, int j) {
+  if (grid.dim() == 1) return "x = " + std::to_string(grid.x(j, 0));
+  std::string at = grid.dim() > 2 ? "(x, y, z) = (" : "(x, y) = (";
+  for (int a = 0; a < grid.dim(); ++a)
+    at += (a ? ", " : "") + std::to_string(grid.x(j, a));
+  return at + ")";
+}
+
 // Neumann data on a face of a grid of d > 1 axes (core/action/field_faces.h):
 // slope(t, x, a) is ∂_axisφ_a prescribed at time t and the face point x
 // (its d coordinates); side 0 is the face at the axis' first point.
@@ -60,15 +70,8 @@ inline void CheckFieldInput(double t_end, const sbp::SpaceGrid<double>& grid,
   for (std::size_t k = 0; k < n; ++k)
     if (!std::isfinite(phi0[k]) || !std::isfinite(pi0[k])) {
       const int j = int(k / m);
-      std::string at = "x = " + std::to_string(grid.x(j, 0));
-      if (grid.dim() > 1) {
-        at = "(x, y";
-        at += grid.dim() > 2 ? ", z) = (" : ") = (";
-        for (int a = 0; a < grid.dim(); ++a)
-          at += (a ? ", " : "") + std::to_string(grid.x(j, a));
-        at += ")";
-      }
-      throw std::invalid_argument("initial data: non-finite value at " + at);
+      throw std::invalid_argument("initial data: non-finite value at " +
+                                  PointName(grid, j));
     }
 }
 

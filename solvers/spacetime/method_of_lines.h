@@ -111,7 +111,7 @@ class FieldAcceleration {
         throw std::invalid_argument(
             "method of lines: the density must be ½ φ_tᵀ M φ_t − U(φ, ∇φ) "
             "with constant M; it is not at " +
-            Where(j));
+            PointName(grid_, j));
     }
     Eigen::FullPivLU<Eigen::Matrix<double, m, m>> lu(mass);
     if (!lu.isInvertible())
@@ -166,13 +166,6 @@ class FieldAcceleration {
   }
 
  private:
-  std::string Where(int j) const {
-    std::string w = "x = (";
-    for (int a = 0; a < grid_.dim(); ++a)
-      w += (a ? ", " : "") + std::to_string(grid_.x(j, a));
-    return grid_.dim() == 1 ? "x = " + std::to_string(grid_.x(j, 0)) : w + ")";
-  }
-
   const Density& density_;
   const sbp::SpaceGrid<double>& grid_;
   int n_;
