@@ -155,18 +155,24 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
   return d;
 }
 
+nlohmann::json AxisJson(const scene::FieldAxis& x) {
+  const auto dx = x.Space();
+  return {
+      {"operator", dx.name()}, {"order", dx.order()}, {"boundary", x.boundary},
+      {"points", dx.points()}, {"x0", x.x0},          {"x1", x.x1},
+      {"dx", dx.dx()}};
+}
+
 nlohmann::json GridJson(const scene::FieldScene& s,
                         const scene::FieldRun& run) {
-  const auto dx = s.Space();
   const auto& sol = run.solution;
-  return {{"space",
-           {{"operator", dx.name()},
-            {"order", dx.order()},
-            {"boundary", s.boundary},
-            {"points", dx.points()},
-            {"x0", s.x0},
-            {"x1", s.x1},
-            {"dx", dx.dx()}}},
+  nlohmann::json space = AxisJson(s);
+  if (s.Dim() > 1) {
+    space = {{"axes", nlohmann::json::array()}, {"points", s.GridPoints()}};
+    for (int a = 0; a < s.Dim(); ++a)
+      space["axes"].push_back(AxisJson(s.Axis(a)));
+  }
+  return {{"space", space},
           {"time",
            {{"operator", s.method.op},
             {"points", sol.points},
@@ -216,7 +222,7 @@ scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
 
 // The title, the grids and the solver's account, for the reader.
 // " with ends dirichlet (0) / natural" on an interval.
-std::string Ends(const scene::FieldScene& s) {
+std::string Ends(const scene::FieldAxis& s) {
   if (s.boundary == "periodic") return "";
   std::ostringstream o;
   o << " with ends";
@@ -228,15 +234,35 @@ std::string Ends(const scene::FieldScene& s) {
   return o.str();
 }
 
+// "sbp42 on [0, 1] with ends …, 64 points", or per axis on a grid:
+// "64 × 64 points: x sbp42 on [0, 1] …; y order-8 periodic on [0, 1)".
+std::string SpaceText(const scene::FieldScene& s) {
+  std::ostringstream o;
+  auto axis = [&](const scene::FieldAxis& x) {
+    o << x.Space().name() << " on [" << Rounded(x.x0) << ", " << Rounded(x.x1)
+      << (x.boundary == "periodic" ? ")" : "]") << Ends(x);
+  };
+  if (s.Dim() == 1) {
+    axis(s);
+    o << ", " << s.space_points << " points";
+    return o.str();
+  }
+  for (int a = 0; a < s.Dim(); ++a)
+    o << (a ? " × " : "") << s.Axis(a).space_points;
+  o << " points:";
+  for (int a = 0; a < s.Dim(); ++a) {
+    o << (a ? "; " : " ") << "xyz"[a] << " ";
+    axis(s.Axis(a));
+  }
+  return o.str();
+}
+
 void PrintRun(std::ostream& human, const scene::FieldScene& s,
               const spacetime::FieldSolution& sol) {
-  const auto dx = s.Space();
   human << (s.title.empty() ? s.source : s.title)
         << "\n  field: " << s.components
-        << (s.components == 1 ? " component, " : " components, ") << dx.name()
-        << " on [" << Rounded(s.x0) << ", " << Rounded(s.x1)
-        << (s.boundary == "periodic" ? ")" : "]") << Ends(s) << ", "
-        << dx.points() << " points\n  " << s.method.op << ", " << sol.points
+        << (s.components == 1 ? " component, " : " components, ")
+        << SpaceText(s) << "\n  " << s.method.op << ", " << sol.points
         << " time points on [0, " << Rounded(s.t_end) << "]";
   if (s.method.tolerance.enabled())
     human << " under error control (tolerance " << s.method.tolerance.absolute
@@ -244,8 +270,11 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
           << Rounded(sol.min_step) << " … " << Rounded(sol.max_step) << ", "
           << sol.rejected << " windows rejected)";
   if (sol.windows > 1) human << ", " << sol.windows << " windows";
-  human << ": " << sol.status.reason << ", " << sol.factorizations
-        << " Newton iterations, " << Rounded(sol.seconds_total) << " s\n"
+  // The mode solve keeps its factorization across windows: Newton steps
+  // and factorizations are two counts.
+  human << ": " << sol.status.reason << ", " << sol.corrections
+        << " Newton steps on " << sol.factorizations << " factorizations, "
+        << Rounded(sol.seconds_total) << " s\n"
         << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
         << Rounded(sol.limit) << ")\n";
 }
@@ -284,9 +313,13 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   const fs::path staging = MakeStagingDirectory(out);
   const StagingCleanup cleanup{staging};
   const auto slices = WrittenSlices(s, run);
-  std::vector<std::string> files = {
-      s.output.format == "binary" ? "field.bin" : "field.csv", "summary.json"};
-  const nlohmann::json layout = WriteField(staging, s, run, slices);
+  const bool hdf5 = s.output.format == "hdf5";
+  std::vector<std::string> files = {hdf5                          ? "field.h5"
+                                    : s.output.format == "binary" ? "field.bin"
+                                                                  : "field.csv",
+                                    "summary.json"};
+  const nlohmann::json layout = hdf5 ? WriteFieldHdf5(staging, s, run, slices)
+                                     : WriteField(staging, s, run, slices);
   if (!run.columns.empty()) {
     WriteDiagnostics(staging, run, slices);
     files.push_back("diagnostics.csv");
@@ -294,6 +327,11 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
   std::vector<std::string> warnings;
   for (const auto& f : WriteFieldPlots(staging, s, run, warnings))
     files.push_back(f);
+  nlohmann::json pictures = nullptr;
+  if (s.Dim() > 1)
+    for (const auto& f :
+         WriteSlicePictures(staging, s, run, slices, warnings, pictures))
+      files.push_back(f);
   std::ostringstream human;
   PrintRun(human, s, sol);
   const nlohmann::json diagnostics = Diagnostics(run, human);
@@ -311,6 +349,7 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
       {"seconds", {{"solve", sol.seconds_total}, {"total", seconds}}},
       {"diagnostics", diagnostics},
       {"layout", layout},
+      {"pictures", pictures},
       {"written_slices", slices.size()},
       {"files", files},
       {"warnings", warnings}};
@@ -329,13 +368,10 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
 
 int CheckFieldScene(const scene::FieldScene& s) {
   for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
-  const auto dx = s.Space();
   std::cout << s.source << ": ok";
   if (!s.title.empty()) std::cout << " — " << s.title;
-  std::cout << "\n  field of " << s.components << " component(s), " << dx.name()
-            << " on [" << s.x0 << ", " << s.x1
-            << (s.boundary == "periodic" ? ")" : "]") << Ends(s) << ", "
-            << dx.points() << " points; " << s.terms.size() << " term(s):";
+  std::cout << "\n  field of " << s.components << " component(s), "
+            << SpaceText(s) << "; " << s.terms.size() << " term(s):";
   for (const auto& t : s.terms) std::cout << " " << t.type->name;
   std::cout << "\n  profile " << s.initial.profile
             << (s.exact ? " (exact solution known)" : "") << "; " << s.method.op

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,21 @@ std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
                                          const scene::FieldScene& s,
                                          const scene::FieldRun& run,
                                          std::vector<std::string>& warnings);
+
+// field.h5: the written slices (scene/field_hdf5.h); returns the file's
+// layout for summary.json.
+nlohmann::json WriteFieldHdf5(const std::filesystem::path& dir,
+                              const scene::FieldScene& s,
+                              const scene::FieldRun& run,
+                              const std::vector<std::size_t>& slices);
+
+// A field on 2 or 3 axes: heat maps of the slices nearest the scene's
+// heat_maps times and field.gif of the written slices; a picture that cannot
+// be drawn is a warning. Returns the files drawn and describes them in
+// `pictures` (for summary.json).
+std::vector<std::string> WriteSlicePictures(
+    const std::filesystem::path& dir, const scene::FieldScene& s,
+    const scene::FieldRun& run, const std::vector<std::size_t>& slices,
+    std::vector<std::string>& warnings, nlohmann::json& pictures);
 
 }  // namespace vivp::apps

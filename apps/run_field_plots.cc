@@ -26,9 +26,12 @@ CurveOf Describe(const std::string& column) {
   if (column == "energy")
     return {"E(t) - E(0)", "energy", "energy E = Σ Hx (π·φ_t − L), change",
             true, false};
-  if (column == "momentum")
-    return {"P(t) - P(0)", "momentum", "momentum P = −Σ Hx π·φ_x, change", true,
+  if (column.rfind("momentum", 0) == 0) {
+    const std::string axis = column == "momentum" ? "x" : column.substr(9);
+    return {"P(t) - P(0)", column,
+            "momentum P_" + axis + " = −Σ H π·∂_" + axis + "φ, change", true,
             false};
+  }
   if (column == "charge")
     return {"Q(t) - Q(0)", "charge",
             "U(1) charge Q = Σ Hx (φ_0 π_1 − φ_1 π_0), change", true, false};
@@ -55,7 +58,8 @@ std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
   const std::string title = s.title.empty() ? s.source : s.title;
   const report::FieldSeries series{
       .t = sol.t, .x = run.x, .phi = sol.phi, .components = s.components};
-  for (int a = 0; a < s.components; ++a) {
+  // A field on a grid: its slices are drawn by WriteSlicePictures.
+  for (int a = 0; a < s.components && s.Dim() == 1; ++a) {
     const std::string stem = a == 0 ? "field" : "field_" + std::to_string(a);
     const std::string label =
         s.components == 1 ? "φ" : "φ_" + std::to_string(a);
@@ -66,8 +70,9 @@ std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
   }
   std::vector<double> times;
   for (int k = 0; k <= 4; ++k) times.push_back(s.t_end * k / 4.0);
-  draw("snapshots.png",
-       [&] { report::Snapshots(dir, "snapshots", series, times, title); });
+  if (s.Dim() == 1)
+    draw("snapshots.png",
+         [&] { report::Snapshots(dir, "snapshots", series, times, title); });
   for (std::size_t c = 0; c < run.columns.size(); ++c) {
     const CurveOf curve = Describe(run.columns[c]);
     const auto& v = run.values[c];

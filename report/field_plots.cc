@@ -36,19 +36,6 @@ std::vector<std::size_t> Thin(std::size_t n, int most) {
   return idx;
 }
 
-std::string Quoted(const std::string& s) {
-  std::string q;
-  for (char c : s) {
-    if (c == '\n') {  // a line break of a title, as gnuplot writes it
-      q += "\\n";
-      continue;
-    }
-    if (c == '"' || c == '\\') q += '\\';
-    q += c;
-  }
-  return "\"" + q + "\"";
-}
-
 // The thinned rows (x, t, φ) of a heat map and the largest |φ| among them.
 std::vector<std::vector<double>> HeatRows(const FieldSeries& f,
                                           const HeatMapStyle& style,

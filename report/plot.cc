@@ -73,4 +73,17 @@ fs::path Figure::Render() {
   return png;
 }
 
+std::string Quoted(const std::string& s) {
+  std::string q;
+  for (char c : s) {
+    if (c == '\n') {  // a line break of a title, as gnuplot writes it
+      q += "\\n";
+      continue;
+    }
+    if (c == '"' || c == '\\') q += '\\';
+    q += c;
+  }
+  return "\"" + q + "\"";
+}
+
 }  // namespace vivp::report

@@ -42,4 +42,8 @@ class Figure {
   std::ostringstream script_;
 };
 
+// s as a gnuplot string: in double quotes, with quotes and backslashes
+// escaped and a line break as gnuplot writes it.
+std::string Quoted(const std::string& s);
+
 }  // namespace vivp::report

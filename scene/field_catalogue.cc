@@ -50,7 +50,7 @@ bool FieldScene::Wants(const std::string& diagnostic) const {
                    diagnostic) != output.diagnostics.end();
 }
 
-sbp::SpaceDerivative<double> FieldScene::Space() const {
+sbp::SpaceDerivative<double> FieldAxis::Space() const {
   if (boundary == "periodic")
     return sbp::SpaceDerivative<double>::Periodic(
         space_order, int(space_points), x0, x1 - x0);
@@ -58,16 +58,32 @@ sbp::SpaceDerivative<double> FieldScene::Space() const {
                                                int(space_points), x0, x1);
 }
 
+sbp::SpaceGrid<double> FieldScene::Grid() const {
+  std::vector<sbp::SpaceDerivative<double>> axes;
+  for (int a = 0; a < Dim(); ++a) axes.push_back(Axis(a).Space());
+  return sbp::SpaceGrid<double>(std::move(axes));
+}
+
 spacetime::FieldBoundary FieldScene::Boundary() const {
   spacetime::FieldBoundary b;
   spacetime::FieldBoundarySide* sides[2] = {&b.left, &b.right};
-  for (int side = 0; side < 2; ++side) {
-    if (boundary == "periodic" || ends[side] == "natural") continue;
-    sides[side]->kind = ends[side] == "dirichlet"
-                            ? action::BoundaryKind::kDirichlet
-                            : action::BoundaryKind::kNeumann;
-    const double v = boundary_values[side];
-    sides[side]->value = [v](double, int) { return v; };
+  for (int a = 0; a < Dim(); ++a) {
+    const FieldAxis& x = Axis(a);
+    for (int side = 0; side < 2; ++side) {
+      if (x.boundary == "periodic" || x.ends[side] == "natural") continue;
+      const double v = x.boundary_values[side];
+      // On a grid of d > 1 axes every end is a face with a normal slope
+      // (the reader refuses dirichlet there).
+      if (Dim() > 1) {
+        b.faces.push_back(
+            {a, side, [v](double, const double*, int) { return v; }});
+        continue;
+      }
+      sides[side]->kind = x.ends[side] == "dirichlet"
+                              ? action::BoundaryKind::kDirichlet
+                              : action::BoundaryKind::kNeumann;
+      sides[side]->value = [v](double, int) { return v; };
+    }
   }
   return b;
 }
@@ -85,20 +101,30 @@ nlohmann::json FieldSceneJson(const FieldScene& s) {
     for (const auto& [name, v] : t.values) j[name] = v.at(0);
     terms.push_back(j);
   }
-  nlohmann::json field = {{"components", s.components},
-                          {"domain", {s.x0, s.x1}},
-                          {"points", s.space_points},
-                          {"boundary", s.boundary}};
-  if (s.boundary == "periodic") {
-    field["space_order"] = s.space_order;
-  } else {
-    field["space_operator"] = s.space_operator;
-    field["ends"] = s.ends;
-    field["boundary_values"] = s.boundary_values;
+  auto axis = [](const FieldAxis& x) {
+    nlohmann::json j = {{"domain", {x.x0, x.x1}},
+                        {"points", x.space_points},
+                        {"boundary", x.boundary}};
+    if (x.boundary == "periodic") {
+      j["space_order"] = x.space_order;
+    } else {
+      j["space_operator"] = x.space_operator;
+      j["ends"] = x.ends;
+      j["boundary_values"] = x.boundary_values;
+    }
+    return j;
+  };
+  nlohmann::json field = axis(s);
+  field["components"] = s.components;
+  if (s.Dim() > 1) {
+    // One entry per axis, as the scene gives them.
+    field = {{"components", s.components}, {"axes", nlohmann::json::array()}};
+    for (int a = 0; a < s.Dim(); ++a) field["axes"].push_back(axis(s.Axis(a)));
   }
   nlohmann::json initial = {{"profile", s.initial.profile},
                             {"allow_jump", s.initial.allow_jump}};
   for (const auto& [name, v] : s.initial.parameters) initial[name] = v;
+  for (const auto& [name, v] : s.initial.vectors) initial[name] = v;
   if (!s.initial.file.empty()) initial["file"] = s.initial.file;
   if (s.boundary == "periodic" && s.initial.profile != "csv")
     initial["jump"] = s.initial.jump;
@@ -123,7 +149,9 @@ nlohmann::json FieldSceneJson(const FieldScene& s) {
            {{"diagnostics", s.output.diagnostics},
             {"stride", s.output.stride},
             {"format", s.output.format},
-            {"phi_t", s.output.phi_t}}}};
+            {"phi_t", s.output.phi_t},
+            {"heat_maps", s.output.heat_maps},
+            {"animation", s.Dim() > 1 && s.output.animation}}}};
 }
 
 std::string FieldSchemaHelp() {

@@ -23,57 +23,13 @@ using Formula = FieldFormula;
 // (t − t_c, x − x_c), φ_t by a Jet in t.
 template <class U>
 Formula FromExact(U u, double t_c, double x_c) {
-  return [u, t_c, x_c](double t, double x, double* phi, double* phi_t) {
+  return [u, t_c, x_c](double t, const double* x, double* phi, double* phi_t) {
     using J = ceres::Jet<double, 1>;
-    const J v = u(J(t - t_c, 0), J(x - x_c));
+    const J v = u(J(t - t_c, 0), J(x[0] - x_c));
     phi[0] = v.a;
     phi_t[0] = v.v[0];
   };
 }
-
-// The scene's terms by name, for matching a profile's equation.
-struct TermSet {
-  const FieldScene& s;
-  bool Has(const std::string& name) const {
-    return std::any_of(
-        s.terms.begin(), s.terms.end(),
-        [&](const ListedEffect& e) { return e.type->name == name; });
-  }
-  // The parameter of a listed term, or `fallback` when the term is absent.
-  double Value(const std::string& term, const std::string& key,
-               double fallback) const {
-    for (const auto& e : s.terms)
-      if (e.type->name == term) return e.values.at(key).at(0);
-    return fallback;
-  }
-  // Exactly these terms (each is listed at most once).
-  bool Are(std::set<std::string> names) const {
-    if (names.size() != s.terms.size()) return false;
-    for (const auto& e : s.terms)
-      if (!names.count(e.type->name)) return false;
-    return true;
-  }
-  bool Within(std::set<std::string> names) const {
-    for (const auto& e : s.terms)
-      if (!names.count(e.type->name)) return false;
-    return true;
-  }
-};
-
-// The value a profile parameter was read with, and its node for refusals.
-struct ProfileValues {
-  const TomlReader& r;
-  const toml::table& t;
-  const FieldScene& s;
-  double operator[](const std::string& key) const {
-    return s.initial.parameters.at(key);
-  }
-  [[noreturn]] void Fail(const std::string& key, const std::string& what,
-                         const std::string& expected) const {
-    const toml::node* n = t.get(key);
-    r.Fail(n ? *n : *t.get("profile"), what, "expected " + expected);
-  }
-};
 
 ProfileFormulas Gaussian(const ProfileValues& p, const TermSet& terms) {
   if (!(p["width"] > 0))
@@ -83,8 +39,8 @@ ProfileFormulas Gaussian(const ProfileValues& p, const TermSet& terms) {
   fields::MovingGaussian g{p["amplitude"], p["width"], p["center"],
                            p["velocity"], c};
   ProfileFormulas f;
-  f.initial = [g](double t, double x, double* phi, double* phi_t) {
-    std::tie(phi[0], phi_t[0]) = g(t, x);
+  f.initial = [g](double t, const double* x, double* phi, double* phi_t) {
+    std::tie(phi[0], phi_t[0]) = g(t, x[0]);
   };
   if (!terms.Are({"kinetic", "gradient"})) {
     f.no_exact =
@@ -110,8 +66,8 @@ ProfileFormulas Gaussian(const ProfileValues& p, const TermSet& terms) {
                                         : Images::kAntiMirrored;
   g.x0 = p.s.x0;
   g.length = p.s.x1 - p.s.x0;
-  f.exact = [g](double t, double x, double* phi, double* phi_t) {
-    std::tie(phi[0], phi_t[0]) = g(t, x);
+  f.exact = [g](double t, const double* x, double* phi, double* phi_t) {
+    std::tie(phi[0], phi_t[0]) = g(t, x[0]);
   };
   return f;
 }
@@ -190,7 +146,9 @@ ProfileFormulas PlaneWave(const ProfileValues& p, const TermSet& terms) {
            "the plane wave's ω² = " + FormatNumber(omega2) +
                " is negative for these terms",
            "an amplitude with ω² = c²k² + m² + λ_q A² + λ_4(A² − v²) >= 0");
-  const fields::PlaneWave wave{a, p["k"], std::sqrt(omega2), s.components};
+  const fields::PlaneWave plane{a, p["k"], std::sqrt(omega2), s.components};
+  const Formula wave = [plane](double t, const double* x, double* phi,
+                               double* phi_t) { plane(t, x[0], phi, phi_t); };
   ProfileFormulas f{wave, {}, ""};
   if (exact)
     f.exact = wave;

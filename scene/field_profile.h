@@ -5,13 +5,59 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include "scene/field_scene.h"
 #include "scene/toml_reader.h"
 
 namespace vivp::scene::detail {
+
+// The scene's terms by name, for matching a profile's equation.
+struct TermSet {
+  const FieldScene& s;
+  bool Has(const std::string& name) const {
+    return std::any_of(
+        s.terms.begin(), s.terms.end(),
+        [&](const ListedEffect& e) { return e.type->name == name; });
+  }
+  // The parameter of a listed term, or `fallback` when the term is absent.
+  double Value(const std::string& term, const std::string& key,
+               double fallback) const {
+    for (const auto& e : s.terms)
+      if (e.type->name == term) return e.values.at(key).at(0);
+    return fallback;
+  }
+  // Exactly these terms (each is listed at most once).
+  bool Are(std::set<std::string> names) const {
+    if (names.size() != s.terms.size()) return false;
+    for (const auto& e : s.terms)
+      if (!names.count(e.type->name)) return false;
+    return true;
+  }
+  bool Within(std::set<std::string> names) const {
+    for (const auto& e : s.terms)
+      if (!names.count(e.type->name)) return false;
+    return true;
+  }
+};
+
+// The value a profile parameter was read with, and its node for refusals.
+struct ProfileValues {
+  const TomlReader& r;
+  const toml::table& t;
+  const FieldScene& s;
+  double operator[](const std::string& key) const {
+    return s.initial.parameters.at(key);
+  }
+  [[noreturn]] void Fail(const std::string& key, const std::string& what,
+                         const std::string& expected) const {
+    const toml::node* n = t.get(key);
+    r.Fail(n ? *n : *t.get("profile"), what, "expected " + expected);
+  }
+};
 
 struct ProfileFormulas {
   FieldFormula initial;
@@ -23,6 +69,20 @@ struct ProfileFormulas {
 // is the [initial] table, whose values a refusal points at.
 ProfileFormulas MakeProfile(const TomlReader& r, const toml::table& initial,
                             const FieldScene& s);
+
+// The profiles of a grid of d = 2 or 3 axes (field_profile_nd.cc): their
+// keys with defaults (a vector key has one entry per axis), and their
+// formulas.
+struct ProfileKey {
+  std::string name;
+  double fallback;
+  std::string meaning;
+  bool vector = false;  // one value per axis: center, k
+};
+const std::vector<ProfileKey>& ProfileKeysNd(const std::string& profile);
+const std::vector<std::string>& ProfileNamesNd();
+ProfileFormulas MakeProfileNd(const TomlReader& r, const toml::table& initial,
+                              const FieldScene& s);
 
 // Reads s.phi0 and s.phi_t0 from the CSV file named at `file` (relative to
 // `base`): one row per spatial point, φ_0 … φ_{m−1} then φ_t,0 … φ_t,m−1.

@@ -11,14 +11,15 @@ namespace vivp::scene {
 
 namespace {
 
-// max over x and components of |φ − φ_exact| at time t; slice: value
+// max over the grid and components of |φ − φ_exact| at time t; slice: value
 // j·m + a.
-double SliceError(const FieldScene& s, const std::vector<double>& x, double t,
-                  const double* slice) {
+double SliceError(const FieldScene& s, const sbp::SpaceGrid<double>& grid,
+                  double t, const double* slice) {
   const int m = s.components;
-  double phi[2], phi_t[2], worst = 0;
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    s.exact(t, x[j], phi, phi_t);
+  double phi[2], phi_t[2], x[3], worst = 0;
+  for (int j = 0; j < grid.points(); ++j) {
+    for (int a = 0; a < grid.dim(); ++a) x[a] = grid.x(j, a);
+    s.exact(t, x, phi, phi_t);
     for (int a = 0; a < m; ++a) {
       const double e = std::abs(slice[j * m + a] - phi[a]);
       if (std::isnan(e)) return e;  // no exact value: no error, not 0
@@ -28,52 +29,78 @@ double SliceError(const FieldScene& s, const std::vector<double>& x, double t,
   return worst;
 }
 
-template <int M>
+// The diagnostics' columns: the scene's names, with "momentum" one column
+// per axis on a grid (momentum_x, momentum_y, …).
+std::vector<std::string> Columns(const FieldScene& s) {
+  std::vector<std::string> c;
+  for (const auto& name : s.output.diagnostics) {
+    if (name != "momentum" || s.Dim() == 1) {
+      c.push_back(name);
+      continue;
+    }
+    for (int a = 0; a < s.Dim(); ++a)
+      c.push_back(std::string("momentum_") + "xyz"[a]);
+  }
+  return c;
+}
+
+double Column(const std::string& name, const action::FieldCharges& q) {
+  if (name == "energy") return q.energy;
+  if (name == "momentum" || name == "momentum_x") return q.momenta[0];
+  if (name == "momentum_y") return q.momenta[1];
+  if (name == "momentum_z") return q.momenta[2];
+  return q.charge;
+}
+
+template <int M, int d>
 FieldRun Run(const FieldScene& s,
              const std::function<void(int, int, double)>& on_window) {
-  const auto density = s.Density<M>();
-  const auto dx = s.Space();
+  const auto density = s.Density<M, d>();
+  const auto grid = s.Grid();
   FieldRun run;
-  for (int j = 0; j < dx.points(); ++j) run.x.push_back(dx.x(j));
+  if (d == 1)
+    for (int j = 0; j < grid.points(); ++j) run.x.push_back(grid.x(j, 0));
   spacetime::FieldSolveOptions options;
   options.on_window = on_window;
   options.boundary = s.Boundary();
   options.tolerance = s.method.tolerance;
-  options.max_points = kMaxFieldValues / (dx.points() * M);
+  options.max_points = kMaxFieldValues / (grid.points() * M);
   options.linear = s.method.linear_solver == "sparse-lu"
                        ? spacetime::WindowLinearSolver::kSparseLu
                        : spacetime::WindowLinearSolver::kModes;
-  const spacetime::FieldGrid grid{.op = s.method.op,
+  const spacetime::FieldGrid time{.op = s.method.op,
                                   .points = s.time_points,
                                   .t_end = s.t_end,
                                   .window_points = s.method.window_points};
-  run.solution =
-      spacetime::SolveField(density, dx, grid, s.phi0, s.phi_t0, options);
+  // One axis: the solver compiled for the derivative (composed.h).
+  if constexpr (d == 1)
+    run.solution = spacetime::SolveField(density, s.Space(), time, s.phi0,
+                                         s.phi_t0, options);
+  else
+    run.solution =
+        spacetime::SolveField(density, grid, time, s.phi0, s.phi_t0, options);
   const auto& sol = run.solution;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.status.converged) return run;
   run.closure.assign(sol.t.size(), 0);
   if (!sol.window_ends.empty()) run.closure.at(sol.window_ends.back()) = 1;
-  run.columns = s.output.diagnostics;
+  run.columns = Columns(s);
   run.values.assign(run.columns.size(), {});
-  const std::size_t n = std::size_t(dx.points()) * M;
+  const std::size_t n = std::size_t(grid.points()) * M;
+  const bool charges =
+      s.Wants("energy") || s.Wants("momentum") || s.Wants("charge");
   for (std::size_t k = 0; k < sol.t.size(); ++k) {
     const std::span<const double> phi(sol.phi.data() + k * n, n);
     const std::span<const double> phi_t(sol.phi_t.data() + k * n, n);
     action::FieldCharges q;
-    if (s.Wants("energy") || s.Wants("momentum") || s.Wants("charge"))
-      q = action::ChargesOfSlice(density, dx, phi, phi_t);
-    for (std::size_t c = 0; c < run.columns.size(); ++c) {
-      const std::string& name = run.columns[c];
-      run.values[c].push_back(name == "energy"     ? q.energy
-                              : name == "momentum" ? q.momentum
-                              : name == "charge"
-                                  ? q.charge
-                                  : SliceError(s, run.x, sol.t[k], phi.data()));
-    }
+    if (charges) q = action::ChargesOfSlice(density, grid, phi, phi_t);
+    for (std::size_t c = 0; c < run.columns.size(); ++c)
+      run.values[c].push_back(run.columns[c] == "error"
+                                  ? SliceError(s, grid, sol.t[k], phi.data())
+                                  : Column(run.columns[c], q));
   }
   if (s.exact)
-    run.end_state_error = SliceError(s, run.x, s.t_end, sol.end.phi.data());
+    run.end_state_error = SliceError(s, grid, s.t_end, sol.end.phi.data());
   return run;
 }
 
@@ -81,7 +108,15 @@ FieldRun Run(const FieldScene& s,
 
 FieldRun RunFieldScene(const FieldScene& s,
                        const std::function<void(int, int, double)>& on_window) {
-  return s.components == 2 ? Run<2>(s, on_window) : Run<1>(s, on_window);
+  const bool two = s.components == 2;
+  switch (s.Dim()) {
+    case 2:
+      return two ? Run<2, 2>(s, on_window) : Run<1, 2>(s, on_window);
+    case 3:
+      return two ? Run<2, 3>(s, on_window) : Run<1, 3>(s, on_window);
+    default:
+      return two ? Run<2, 1>(s, on_window) : Run<1, 1>(s, on_window);
+  }
 }
 
 }  // namespace vivp::scene

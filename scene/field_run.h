@@ -17,7 +17,7 @@ namespace vivp::scene {
 
 struct FieldRun {
   spacetime::FieldSolution solution;  // every slice kept
-  std::vector<double> x;              // the spatial grid
+  std::vector<double> x;  // one axis: its points (a grid: FieldScene::Grid())
   // The scene's diagnostics in its order, one value per slice of solution.t:
   // energy, momentum, charge (∑ Hˣ of the densities) and error
   // (max over x and components of |φ − φ_exact|).

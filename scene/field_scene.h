@@ -1,5 +1,6 @@
-// A field scene: a 1+1-dimensional field stated as a sum of named density
-// terms, its domain and spatial operator, an initial profile, the time grid,
+// A field scene: a field in 1, 2 or 3 spatial dimensions stated as a sum of
+// named density terms, its domain and spatial operator per axis, an initial
+// profile, the time grid,
 // the method and what to output (docs/field_scenes.md). A scene with a
 // [field] table is a field scene; one with [system] is a point-mechanics
 // scene (scene.h), and a file with sections of both kinds is refused.
@@ -36,6 +37,25 @@
 //   stride = 1                              # every stride-th slice
 //   format = "csv"                          # csv | binary
 //   phi_t = true                            # write φ_t next to φ
+//
+// In 2+1 or 3+1 dimensions the [field] keys take one entry per axis (a
+// single value applies to every axis), the slices go to an HDF5 file, and
+// heat maps of chosen slices and an animated GIF are drawn:
+//
+//   [field]
+//   domain = [[-10.0, 10.0], [-10.0, 10.0]] # [[x0, x1], [y0, y1]]
+//   points = [64, 64]                       # or 64 for both
+//   boundary = ["periodic", "neumann"]      # per axis; an axis's entry may
+//                                           # be [left, right]
+//   boundary_values = [[0, 0], [0, 0]]      # per axis, normal slopes
+//   [initial]
+//   profile = "ring"                        # gaussian, ring, oscillon,
+//   radius = 6.0                            # plane_wave
+//   center = [0.0, 0.0]
+//   [output]
+//   format = "hdf5"                         # the only format in d > 1
+//   heat_maps = [0.0, 5.0]                  # times of PNG heat maps
+//   animation = true                        # field.gif
 #pragma once
 
 #include <array>
@@ -49,36 +69,59 @@
 #include <vector>
 
 #include "core/sbp/space.h"
+#include "core/sbp/space_grid.h"
 #include "problems/fields/terms.h"
 #include "scene/scene.h"
 #include "solvers/spacetime/solve.h"
 
 namespace vivp::scene {
 
-// φ_a(t, x) and φ_t,a(t, x) of a profile's formula, a < components.
+// φ_a(t, x) and φ_t,a(t, x) of a profile's formula, a < components; x
+// holds the point's d coordinates.
 using FieldFormula =
-    std::function<void(double t, double x, double* phi, double* phi_t)>;
+    std::function<void(double t, const double* x, double* phi, double* phi_t)>;
 
-struct FieldScene {
-  std::string source;  // file name, for messages
-  std::string title;
-  int components = 1;
+// One spatial axis of a field scene: its interval, points, boundary and
+// spatial operator.
+struct FieldAxis {
   double x0 = 0, x1 = 1;
   long long space_points = 0;
   // periodic, or the ends' kinds: natural | dirichlet | neumann, one for
   // both ends or "left/right" when they differ.
   std::string boundary = "periodic";
   std::array<std::string, 2> ends = {"natural", "natural"};
-  // φ (dirichlet) or φ_x (neumann) at the left and right ends, every
+  // φ (dirichlet) or the normal slope ∂φ (neumann) at the two ends, every
   // component.
   std::array<double, 2> boundary_values = {0, 0};
   int space_order = 8;                   // periodic differences
   std::string space_operator = "sbp42";  // natural: an SBP operator
-  std::vector<ListedEffect> terms;       // type from FieldTermCatalogue()
+  sbp::SpaceDerivative<double> Space() const;
+};
+
+// The scene itself is its first axis (the only one of a 1+1-dimensional
+// field); cross_axes are y and z of a 2+1- or 3+1-dimensional one.
+struct FieldScene : FieldAxis {
+  std::string source;  // file name, for messages
+  std::string title;
+  int components = 1;
+  std::vector<FieldAxis> cross_axes;
+  int Dim() const { return 1 + int(cross_axes.size()); }
+  const FieldAxis& Axis(int a) const {
+    return a == 0 ? *this : cross_axes.at(std::size_t(a) - 1);
+  }
+  long long GridPoints() const {
+    long long n = space_points;
+    for (const auto& a : cross_axes) n *= a.space_points;
+    return n;
+  }
+  sbp::SpaceGrid<double> Grid() const;
+  std::vector<ListedEffect> terms;  // type from FieldTermCatalogue()
   struct Initial {
     std::string profile;
     std::map<std::string, double> parameters;  // defaults filled in
-    std::string file;                          // csv: as resolved
+    // d > 1: the vector parameters (center, k), one entry per axis.
+    std::map<std::string, std::vector<double>> vectors;
+    std::string file;  // csv: as resolved
     bool allow_jump = false;
     double jump = 0;  // periodic: |φ(x_last + Δx) − φ(x0)|, max over a
   } initial;
@@ -103,8 +146,10 @@ struct FieldScene {
   struct Output {
     std::vector<std::string> diagnostics;
     long long stride = 1;
-    std::string format = "csv";
+    std::string format = "csv";  // d > 1: hdf5
     bool phi_t = true;
+    std::vector<double> heat_maps;  // d > 1: times of the PNG heat maps
+    bool animation = true;          // d > 1: the GIF of the slices
   } output;
   // "FILE:LINE:COL: " of [time] points, where an under-resolved grid is
   // reported, and warnings for the reader (an accepted jump).
@@ -112,12 +157,12 @@ struct FieldScene {
   std::vector<std::string> warnings;
 
   bool Wants(const std::string& diagnostic) const;
-  sbp::SpaceDerivative<double> Space() const;
-  // The ends' data for the solver (constant in time).
+  // The ends' data for the solver (constant in time); on a grid of d > 1
+  // axes, Neumann faces.
   spacetime::FieldBoundary Boundary() const;
   // The density of the terms, for components() = M.
-  template <int M>
-  fields::ComposedDensity<M> Density() const {
+  template <int M, int d = 1>
+  fields::ComposedDensity<M, d> Density() const {
     return {Terms()};
   }
   std::vector<fields::FieldTerm> Terms() const;

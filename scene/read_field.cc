@@ -1,5 +1,6 @@
-// A field scene's [field], [[term]], [method], [time] and [output] tables
-// ([initial] is read_profile.cc), and the order they are read in.
+// A field scene's [[term]], [method], [time] and [output] tables ([field] is
+// read_field_axes.cc, [initial] read_profile.cc), and the order they are
+// read in.
 #include <algorithm>
 
 #include "core/sbp/builder.h"
@@ -9,122 +10,6 @@
 #include "solvers/spacetime/composed.h"
 
 namespace vivp::scene::detail {
-
-namespace {
-
-constexpr long long kMaxSpacePoints = 1LL << 16;
-
-void ReadSpacePoints(const TomlReader& r, const toml::table& t, FieldScene& s) {
-  const toml::node& n =
-      r.Require(t, "field", "points", "points = Nx, the spatial points");
-  const bool periodic = s.boundary == "periodic";
-  const long long minimum =
-      periodic ? s.space_order + 1 : sbp::Table(s.space_operator).min_points;
-  const std::string at_least =
-      "at least " + std::to_string(minimum) +
-      (periodic
-           ? " for periodic differences of order " +
-                 std::to_string(s.space_order) + " (or a lower space_order)"
-           : " for the operator " + s.space_operator);
-  s.space_points = r.Whole(n, "points", 0, "a whole number, " + at_least);
-  if (s.space_points < minimum)
-    r.Fail(n,
-           "points = " + std::to_string(s.space_points) +
-               " is too few for the spatial operator",
-           "expected " + at_least);
-  if (s.space_points > kMaxSpacePoints)
-    r.Fail(n, "points = " + std::to_string(s.space_points) + " is too many",
-           "expected at most " + std::to_string(kMaxSpacePoints));
-  try {
-    (void)s.Space();  // any remaining refusal of the operator, at points
-  } catch (const std::invalid_argument& e) {
-    r.Fail(n, OneLine(e.what()), "expected " + at_least);
-  }
-}
-
-// boundary = "periodic" | "natural" | "dirichlet" | "neumann", or an array
-// [left, right] of the last three; boundary_values = [left, right] where an
-// end has data.
-void ReadBoundary(const TomlReader& r, const toml::table& t, FieldScene& s) {
-  const std::vector<std::string> ends = {"natural", "dirichlet", "neumann"};
-  const toml::node* n = t.get("boundary");
-  if (n && n->is_array()) {
-    const toml::array& a = *n->as_array();
-    if (a.size() != 2)
-      r.Fail(*n, "boundary has " + std::to_string(a.size()) + " entries",
-             "expected [left, right], each one of " + Join(ends));
-    for (int side = 0; side < 2; ++side)
-      s.ends[side] = r.Choice(*a.get(side), "boundary", ends);
-    s.boundary =
-        s.ends[0] == s.ends[1] ? s.ends[0] : s.ends[0] + "/" + s.ends[1];
-  } else if (n) {
-    std::vector<std::string> all = {"periodic"};
-    all.insert(all.end(), ends.begin(), ends.end());
-    s.boundary = r.Choice(*n, "boundary", all);
-    if (s.boundary != "periodic") s.ends = {s.boundary, s.boundary};
-  }
-  const bool data = s.boundary != "periodic" &&
-                    (s.ends[0] != "natural" || s.ends[1] != "natural");
-  const std::string expected =
-      "boundary_values = [left, right], φ at a dirichlet end or φ_x at a "
-      "neumann one";
-  if (const toml::node* v = t.get("boundary_values")) {
-    if (!data)
-      r.Fail(*v,
-             "'boundary_values' does not apply to boundary = \"" + s.boundary +
-                 "\"",
-             "expected boundary = \"dirichlet\" or \"neumann\" at an end");
-    const std::vector<double> x = r.Numbers(*v, "boundary_values", 2, expected);
-    s.boundary_values = {x[0], x[1]};
-  }
-}
-
-}  // namespace
-
-void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
-  const toml::table& t = r.Table(root, "field", true);
-  r.CheckKeys(t, "[field]",
-              {"components", "domain", "points", "boundary", "boundary_values",
-               "space_order", "space_operator"});
-  if (const toml::node* n = t.get("components")) {
-    const long long m =
-        r.Whole(*n, "components", 1, "1 (a real field) or 2 (a complex one)");
-    if (m > 2)
-      r.Fail(*n, "components = " + std::to_string(m) + " is not supported",
-             "expected 1 (a real field) or 2 (a complex field)");
-    s.components = int(m);
-  }
-  const std::string domain = "domain = [x0, x1], two finite numbers, x0 < x1";
-  const toml::node& d = r.Require(t, "field", "domain", domain);
-  const std::vector<double> x = r.Numbers(d, "domain", 2, domain);
-  if (!(x[1] > x[0]))
-    r.Fail(d,
-           "domain = [" + FormatNumber(x[0]) + ", " + FormatNumber(x[1]) +
-               "] is empty",
-           "expected " + domain);
-  s.x0 = x[0];
-  s.x1 = x[1];
-  ReadBoundary(r, t, s);
-  const bool periodic = s.boundary == "periodic";
-  if (const toml::node* n = t.get(periodic ? "space_operator" : "space_order"))
-    r.Fail(*n,
-           Quote(periodic ? "space_operator" : "space_order") +
-               " does not apply to boundary = \"" + s.boundary + "\"",
-           periodic ? "expected space_order = 2, 4, 6 or 8 for periodic "
-                      "differences, or boundary = \"natural\""
-                    : "expected space_operator = one of " +
-                          Join(sbp::OperatorNames()) + " on an interval");
-  if (const toml::node* n = t.get("space_order")) {
-    const long long q = r.Whole(*n, "space_order", 2, "2, 4, 6 or 8");
-    if (q > 8 || q % 2)
-      r.Fail(*n, "space_order = " + std::to_string(q) + " is not offered",
-             "expected 2, 4, 6 or 8");
-    s.space_order = int(q);
-  }
-  if (const toml::node* n = t.get("space_operator"))
-    s.space_operator = r.Choice(*n, "space_operator", sbp::OperatorNames());
-  ReadSpacePoints(r, t, s);
-}
 
 void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
   const toml::node* n = root.get("term");
@@ -203,7 +88,7 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
   if (!(s.t_end > 0))
     r.Fail(end, "end = " + FormatNumber(s.t_end) + " is not after 0",
            "expected end > 0 (a field scene starts at t = 0)");
-  const long long slice = s.space_points * s.components;
+  const long long slice = s.GridPoints() * s.components;
   const long long minimum = sbp::Table(s.method.op).min_points;
   const spacetime::WindowLinearSolver linear =
       s.method.linear_solver == "sparse-lu"
@@ -275,14 +160,63 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
              " values solved at once: " + fix);
 }
 
+// heat_maps = [t, …] and animation = true|false, pictures of the slices of
+// a field on 2 or 3 axes (a 1+1-dimensional field has its space-time heat
+// map); by default heat maps at the start, middle and end, and the GIF.
+void ReadFieldPictures(const TomlReader& r, const toml::table& t,
+                       FieldScene& s) {
+  const bool grid = s.Dim() > 1;
+  for (const char* key : {"heat_maps", "animation"})
+    if (const toml::node* n = t.get(key); n && !grid)
+      r.Fail(*n,
+             Quote(key) +
+                 " draws slices of a field on 2 or 3 axes; this one "
+                 "has one axis",
+             "expected no " + std::string(key) +
+                 " (field.png is the space-time heat map)");
+  if (!grid) return;
+  s.output.heat_maps = {0.0, 0.5 * s.t_end, s.t_end};
+  if (const toml::node* n = t.get("heat_maps")) {
+    const toml::array* a = n->as_array();
+    const std::string expected =
+        "heat_maps = [t, …], times between 0 and end = " +
+        FormatNumber(s.t_end);
+    if (!a) r.Fail(*n, "'heat_maps' must be a list of times", expected);
+    s.output.heat_maps = r.Numbers(*n, "heat_maps", a->size(), expected);
+    for (std::size_t k = 0; k < a->size(); ++k)
+      if (!(s.output.heat_maps[k] >= 0 && s.output.heat_maps[k] <= s.t_end))
+        r.Fail(*a->get(k),
+               "heat map time " + FormatNumber(s.output.heat_maps[k]) +
+                   " is outside the run",
+               expected);
+  }
+  if (const toml::node* n = t.get("animation")) {
+    if (!n->is_boolean())
+      r.Fail(*n, "'animation' must be true or false, got " + TypeName(*n),
+             "expected animation = true (field.gif) or false");
+    s.output.animation = *n->value<bool>();
+  }
+}
+
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,
                      FieldScene& s) {
   const toml::table& t = r.Table(root, "output", false);
-  r.CheckKeys(t, "[output]", {"diagnostics", "stride", "format", "phi_t"});
+  r.CheckKeys(
+      t, "[output]",
+      {"diagnostics", "stride", "format", "phi_t", "heat_maps", "animation"});
   if (const toml::node* n = t.get("stride"))
     s.output.stride = r.Whole(*n, "stride", 1, "a whole number >= 1");
-  if (const toml::node* n = t.get("format"))
-    s.output.format = r.Choice(*n, "format", {"csv", "binary"});
+  const bool grid = s.Dim() > 1;
+  if (grid) s.output.format = "hdf5";
+  if (const toml::node* n = t.get("format")) {
+    s.output.format = r.Choice(*n, "format", {"csv", "binary", "hdf5"});
+    if (grid && s.output.format != "hdf5")
+      r.Fail(*n,
+             "format = " + Quote(s.output.format) + " is for one axis; a " +
+                 std::to_string(s.Dim()) + "-axis field is written as HDF5",
+             "expected format = \"hdf5\" (or no format)");
+  }
+  ReadFieldPictures(r, t, s);
   if (const toml::node* n = t.get("phi_t")) {
     if (!n->is_boolean())
       r.Fail(*n, "'phi_t' must be true or false, got " + TypeName(*n),

@@ -13,18 +13,13 @@
 #include "scene/field_profile.h"
 #include "scene/field_sections.h"
 #include "scene/text.h"
+#include "solvers/spacetime/input.h"
 
 namespace vivp::scene::detail {
 
 namespace {
 
 // A profile's keys besides 'profile' and 'allow_jump', with defaults.
-struct ProfileKey {
-  std::string name;
-  double fallback;
-  std::string meaning;
-};
-
 const std::vector<ProfileKey>& KeysOf(const std::string& profile) {
   static const std::map<std::string, std::vector<ProfileKey>> keys = {
       {"gaussian",
@@ -48,19 +43,23 @@ const std::vector<ProfileKey>& KeysOf(const std::string& profile) {
 constexpr double kJumpTolerance = 1e-10;
 
 void ComputeInitialData(const TomlReader& r, const toml::node& at,
-                        const FieldFormula& formula,
-                        const sbp::SpaceDerivative<double>& dx, FieldScene& s) {
+                        const FieldFormula& formula, FieldScene& s) {
   const int m = s.components;
-  s.phi0.assign(std::size_t(s.space_points) * m, 0.0);
+  const auto grid = s.Grid();
+  s.phi0.assign(std::size_t(grid.points()) * m, 0.0);
   s.phi_t0.assign(s.phi0.size(), 0.0);
-  for (int j = 0; j < dx.points(); ++j) {
-    formula(0.0, dx.x(j), &s.phi0[j * m], &s.phi_t0[j * m]);
+  double x[3];
+  for (int j = 0; j < grid.points(); ++j) {
+    for (int a = 0; a < grid.dim(); ++a) x[a] = grid.x(j, a);
+    formula(0.0, x, &s.phi0[j * m], &s.phi_t0[j * m]);
     for (int a = 0; a < m; ++a)
       if (!std::isfinite(s.phi0[j * m + a]) ||
           !std::isfinite(s.phi_t0[j * m + a]))
         r.Fail(at,
                "the profile " + Quote(s.initial.profile) +
-                   " is not finite at x = " + FormatNumber(dx.x(j)),
+                   " is not finite at " +
+                   (grid.dim() == 1 ? "x = " + FormatNumber(grid.x(j, 0))
+                                    : spacetime::PointName(grid, j)),
                "expected parameters for which φ and φ_t are finite numbers");
   }
 }
@@ -84,24 +83,42 @@ void RefuseOrWarnJump(const TomlReader& r, const toml::node& at,
 
 // |φ(x_last + Δx) − φ(x0)| and the same of φ_t, where the periodic grid
 // continues the profile: a jump there is a discontinuity the periodic
-// differences would differentiate.
+// differences would differentiate. On a grid, along every periodic axis at
+// each point of its first face.
 void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
                        const FieldFormula& formula, FieldScene& s) {
   const int m = s.components;
+  const auto grid = s.Grid();
   std::vector<double> a(m), at_a(m), b(m), bt(m);
-  formula(0.0, s.x0, a.data(), at_a.data());
-  formula(0.0, s.x1, b.data(), bt.data());
-  double jump = 0, jump_t = 0;
-  for (int c = 0; c < m; ++c) {
-    jump = std::max(jump, std::abs(b[c] - a[c]));
-    jump_t = std::max(jump_t, std::abs(bt[c] - at_a[c]));
+  double jump = 0, jump_t = 0, x[3];
+  std::string where;
+  for (int axis = 0; axis < grid.dim(); ++axis) {
+    const FieldAxis& line = s.Axis(axis);
+    if (line.boundary != "periodic") continue;
+    for (int j = 0; j < grid.points(); ++j) {
+      if (grid.Coordinate(j, axis) != 0) continue;
+      for (int c = 0; c < grid.dim(); ++c) x[c] = grid.x(j, c);
+      formula(0.0, x, a.data(), at_a.data());
+      x[axis] = line.x1;
+      formula(0.0, x, b.data(), bt.data());
+      for (int c = 0; c < m; ++c) {
+        jump = std::max(jump, std::abs(b[c] - a[c]));
+        jump_t = std::max(jump_t, std::abs(bt[c] - at_a[c]));
+      }
+    }
+    if (where.empty() && std::max(jump, jump_t) > 0)
+      where =
+          grid.dim() == 1
+              ? "[" + FormatNumber(line.x0) + ", " + FormatNumber(line.x1) + ")"
+              : std::string("axis ") + "xyz"[axis] + " [" +
+                    FormatNumber(line.x0) + ", " + FormatNumber(line.x1) + ")";
   }
   s.initial.jump = jump;
   if (!(std::max(jump, jump_t) > kJumpTolerance * ProfileSize(s))) return;
   const std::string what =
-      "the profile " + Quote(s.initial.profile) + " is not periodic on [" +
-      FormatNumber(s.x0) + ", " + FormatNumber(s.x1) +
-      "): its periodic continuation jumps by |φ(x_last + Δx) − φ(x0)| = " +
+      "the profile " + Quote(s.initial.profile) + " is not periodic on " +
+      where +
+      ": its periodic continuation jumps by |φ(x_last + Δx) − φ(x0)| = " +
       FormatNumber(jump) + " (|φ_t| by " + FormatNumber(jump_t) + ")";
   RefuseOrWarnJump(r, at, what,
                    "expected a periodic profile, boundary = \"natural\", or "
@@ -140,14 +157,40 @@ void CheckDirichletData(const TomlReader& r, const toml::node& at,
 
 }  // namespace
 
+// The keys of [initial] for the scene's profile: a number each, or on a
+// grid of d axes one number per axis for the vector keys.
+void ReadProfileKeys(const TomlReader& r, const toml::table& t,
+                     const std::vector<ProfileKey>& keys, FieldScene& s) {
+  const std::size_t d = std::size_t(s.Dim());
+  for (const auto& k : keys) {
+    const toml::node* n = t.get(k.name);
+    if (!k.vector) {
+      s.initial.parameters[k.name] =
+          n ? r.Number(*n, k.name, "a finite number (" + k.meaning + ")")
+            : k.fallback;
+      continue;
+    }
+    s.initial.vectors[k.name] =
+        n ? r.Numbers(*n, k.name, d,
+                      k.name + " = [" +
+                          std::string(d == 2 ? "x, y" : "x, y, z") + "], " +
+                          k.meaning)
+          : std::vector<double>(d, k.fallback);
+  }
+}
+
 void ReadProfile(const TomlReader& r, const toml::table& root,
                  const std::filesystem::path& base, FieldScene& s) {
   const toml::table& t = r.Table(root, "initial", true);
-  const toml::node& p = r.Require(
-      t, "initial", "profile", "profile = one of " + Join(FieldProfileNames()));
-  s.initial.profile = r.Choice(p, "profile", FieldProfileNames());
+  const bool grid = s.Dim() > 1;
+  const auto& names = grid ? ProfileNamesNd() : FieldProfileNames();
+  const toml::node& p =
+      r.Require(t, "initial", "profile", "profile = one of " + Join(names));
+  s.initial.profile = r.Choice(p, "profile", names);
+  const auto& keys =
+      grid ? ProfileKeysNd(s.initial.profile) : KeysOf(s.initial.profile);
   std::vector<std::string> valid = {"profile", "allow_jump"};
-  for (const auto& k : KeysOf(s.initial.profile)) valid.push_back(k.name);
+  for (const auto& k : keys) valid.push_back(k.name);
   if (s.initial.profile == "csv") valid.push_back("file");
   r.CheckKeys(t, "[initial] of profile " + Quote(s.initial.profile), valid);
   if (const toml::node* n = t.get("allow_jump")) {
@@ -158,13 +201,7 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
              "data");
     s.initial.allow_jump = *n->value<bool>();
   }
-  for (const auto& k : KeysOf(s.initial.profile)) {
-    const toml::node* n = t.get(k.name);
-    s.initial.parameters[k.name] =
-        n ? r.Number(*n, k.name, "a finite number (" + k.meaning + ")")
-          : k.fallback;
-  }
-  const auto dx = s.Space();
+  ReadProfileKeys(r, t, keys, s);
   if (s.initial.profile == "csv") {
     const toml::node& f =
         r.Require(t, "initial", "file",
@@ -174,10 +211,14 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
     s.no_exact = "a CSV profile has no exact solution";
     return;
   }
-  const ProfileFormulas formulas = MakeProfile(r, t, s);
-  ComputeInitialData(r, p, formulas.initial, dx, s);
-  if (s.boundary == "periodic") CheckPeriodicJump(r, p, formulas.initial, s);
-  CheckDirichletData(r, p, s);
+  const ProfileFormulas formulas =
+      grid ? MakeProfileNd(r, t, s) : MakeProfile(r, t, s);
+  ComputeInitialData(r, p, formulas.initial, s);
+  if (s.boundary == "periodic" ||
+      std::any_of(s.cross_axes.begin(), s.cross_axes.end(),
+                  [](const FieldAxis& a) { return a.boundary == "periodic"; }))
+    CheckPeriodicJump(r, p, formulas.initial, s);
+  if (!grid) CheckDirichletData(r, p, s);
   s.exact = formulas.exact;
   s.no_exact = formulas.no_exact;
 }

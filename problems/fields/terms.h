@@ -6,14 +6,15 @@
 //                                   terms::SineGordon{}}};
 //
 // L is the sum of the listed terms only, so a term that is not listed costs
-// nothing. Each term is L(φ, φ_t, φ_x) for M components, templated on the
-// scalar, and the sum is a density of densities.h: the pointwise automatic
-// differentiation of the field system applies unchanged. Spec() is the
-// term's scene name, formula and parameter table (effect_parameters.h), from
-// which the scene reader and its help are generated. With |φ|² = Σ_a φ_a²:
+// nothing. Each term is L(φ, φ_t, ∇φ) for M components in d spatial
+// dimensions, templated on the scalar, and the sum is a density of
+// densities.h (ComposedDensity<M, d>, d = 1 by default): the pointwise
+// automatic differentiation of the field system applies unchanged. Spec() is
+// the term's scene name, formula and parameter table (effect_parameters.h),
+// from which the scene reader and its help are generated. With |φ|² = Σ_a φ_a²:
 //
 //   kinetic       L += ½|φ_t|²
-//   gradient      L −= ½c²|φ_x|²
+//   gradient      L −= ½c²|∇φ|²  (Σ over the d axes and M components)
 //   mass          L −= ½m²|φ|²
 //   sine_gordon   L −= 1 − cos φ              (one component)
 //   phi4          L −= ¼λ(|φ|² − v²)²
@@ -29,6 +30,7 @@
 #include <vector>
 
 #include "problems/effect_parameters.h"
+#include "problems/fields/densities.h"
 
 namespace vivp::fields {
 
@@ -50,7 +52,7 @@ struct Kinetic {
   static EffectSpec<Kinetic> Spec() {
     return {"kinetic", "L += ½|φ_t|²", {}, /*kinetic=*/true};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T*, const T* phi_t, const T*) const {
     return T(0.5) * detail::Square<M>(phi_t);
   }
@@ -60,12 +62,14 @@ struct Gradient {
   double c = 1.0;
   static EffectSpec<Gradient> Spec() {
     return {"gradient",
-            "L −= ½c²|φ_x|²",
+            "L −= ½c²|∇φ|²",
             {{"c", ParameterKind::kPositive, &Gradient::c, "wave speed c"}}};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T*, const T*, const T* phi_x) const {
-    return T(-0.5 * c * c) * detail::Square<M>(phi_x);
+    T s = GradientSquared<d, M>(phi_x, 0);
+    for (int a = 1; a < M; ++a) s += GradientSquared<d, M>(phi_x, a);
+    return T(-0.5 * c * c) * s;
   }
 };
 
@@ -76,7 +80,7 @@ struct Mass {
             "L −= ½m²|φ|²",
             {{"m", ParameterKind::kNonNegative, &Mass::m, "mass m"}}};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T* phi, const T*, const T*) const {
     return T(-0.5 * m * m) * detail::Square<M>(phi);
   }
@@ -87,7 +91,7 @@ struct SineGordon {
   static EffectSpec<SineGordon> Spec() {
     return {"sine_gordon", "L −= 1 − cos φ  (one component)", {}};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T* phi, const T*, const T*) const {
     using std::cos;
     return cos(phi[0]) - T(1.0);
@@ -103,7 +107,7 @@ struct Phi4 {
             {{"lambda", K::kNonNegative, &Phi4::lambda, "coupling λ"},
              {"v", K::kReal, &Phi4::v, "vacuum |φ| = v"}}};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T* phi, const T*, const T*) const {
     const T w = detail::Square<M>(phi) - T(v * v);
     return T(-0.25 * lambda) * w * w;
@@ -118,7 +122,7 @@ struct Quartic {
             {{"lambda", ParameterKind::kNonNegative, &Quartic::lambda,
               "coupling λ"}}};
   }
-  template <int M, class T>
+  template <int M, int d, class T>
   T Density(const T* phi, const T*, const T*) const {
     const T r2 = detail::Square<M>(phi);
     return T(-0.25 * lambda) * r2 * r2;
@@ -132,9 +136,9 @@ struct Quartic {
 using FieldTerm = std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
                                terms::SineGordon, terms::Phi4, terms::Quartic>;
 
-template <int M>
+template <int M, int d = 1>
 struct ComposedDensity {
-  static constexpr int kDim = M;
+  static constexpr int kDim = M, kSpaceDim = d;
   std::vector<FieldTerm> terms;
 
   template <class T>
@@ -143,7 +147,7 @@ struct ComposedDensity {
     for (const FieldTerm& term : terms)
       std::visit(
           [&](const auto& t) {
-            sum += t.template Density<M>(phi, phi_t, phi_x);
+            sum += t.template Density<M, d>(phi, phi_t, phi_x);
           },
           term);
     return sum;

@@ -1,7 +1,9 @@
 // The field solver for the composed densities of a field scene
 // (problems/fields/terms.h), compiled once in this library for one and two
-// components (composed_1.cc, composed_2.cc): the scene runner and the named
-// field problems of studies/ call it without instantiating the solver again.
+// components on one axis (composed_1.cc, composed_2.cc) and on grids of two
+// and three axes (composed_grid2.cc, composed_grid3.cc): the scene runner and
+// the named field problems of studies/ call it without instantiating the
+// solver again.
 #pragma once
 
 #include <string>
@@ -38,7 +40,17 @@ inline long long MaxSolvedAtOnce(
       const FieldGrid&, std::vector<double>, std::vector<double>,             \
       const FieldSolveOptions&)
 
+#define VIVP_FIELD_SOLVE_GRID(M, D)                                        \
+  template FieldSolution SolveField<fields::ComposedDensity<M, D>>(        \
+      const fields::ComposedDensity<M, D>&, const sbp::SpaceGrid<double>&, \
+      const FieldGrid&, std::vector<double>, std::vector<double>,          \
+      const FieldSolveOptions&)
+
 extern VIVP_FIELD_SOLVE(1);
 extern VIVP_FIELD_SOLVE(2);
+extern VIVP_FIELD_SOLVE_GRID(1, 2);
+extern VIVP_FIELD_SOLVE_GRID(2, 2);
+extern VIVP_FIELD_SOLVE_GRID(1, 3);
+extern VIVP_FIELD_SOLVE_GRID(2, 3);
 
 }  // namespace vivp::spacetime

@@ -1,0 +1,132 @@
+// The files of a field run written as HDF5 (scene/field_hdf5.h), and the
+// pictures of a field on 2 or 3 axes: heat maps of the slices nearest the
+// scene's heat_maps times and the animated GIF of the written slices
+// (report/field_plots_2d.h). A field on 3 axes is drawn in its middle
+// z-plane.
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "apps/run_field.h"
+#include "report/field_plots_2d.h"
+#include "scene/field_hdf5.h"
+
+namespace vivp::apps {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every component of slice k in the plane z = middle (the whole slice on 2
+// axes), as a 2-D slice to draw.
+report::Slice2d PlaneOf(const scene::FieldScene& s,
+                        const sbp::SpaceGrid<double>& grid,
+                        const scene::FieldRun& run, std::size_t k) {
+  const int m = s.components;
+  const int nx = grid.points(0), ny = grid.points(1);
+  report::Slice2d out;
+  out.components = m;
+  out.t = run.solution.t[k];
+  for (int i = 0; i < nx; ++i) out.x.push_back(grid.axis(0).x(i));
+  for (int i = 0; i < ny; ++i) out.y.push_back(grid.axis(1).x(i));
+  const std::size_t per = std::size_t(grid.points()) * m;
+  const std::size_t plane =
+      grid.dim() == 3 ? std::size_t(grid.points(2) / 2) * nx * ny : 0;
+  const double* first = run.solution.phi.data() + k * per + plane * m;
+  out.values.assign(first, first + std::size_t(nx) * ny * m);
+  return out;
+}
+
+// The kept slice nearest to time t.
+std::size_t Nearest(const std::vector<double>& t, double time) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < t.size(); ++k)
+    if (std::abs(t[k] - time) < std::abs(t[best] - time)) best = k;
+  return best;
+}
+
+}  // namespace
+
+nlohmann::json WriteFieldHdf5(const fs::path& dir, const scene::FieldScene& s,
+                              const scene::FieldRun& run,
+                              const std::vector<std::size_t>& slices) {
+  const auto grid = s.Grid();
+  const int m = s.components;
+  const std::size_t per = std::size_t(grid.points()) * m;
+  std::vector<double> t, phi, phi_t;
+  for (std::size_t k : slices) {
+    t.push_back(run.solution.t[k]);
+    const auto at = std::ptrdiff_t(k * per);
+    phi.insert(phi.end(), run.solution.phi.begin() + at,
+               run.solution.phi.begin() + at + std::ptrdiff_t(per));
+    phi_t.insert(phi_t.end(), run.solution.phi_t.begin() + at,
+                 run.solution.phi_t.begin() + at + std::ptrdiff_t(per));
+  }
+  // φ_t is always written: a slice of an HDF5 file is a restartable state.
+  scene::WriteFieldSlices((dir / "field.h5").string(), grid, m, t, phi, phi_t);
+  std::vector<long long> shape = {(long long)slices.size()};
+  for (int a = grid.dim() - 1; a >= 0; --a) shape.push_back(grid.points(a));
+  shape.push_back(m);
+  return {{"file", "field.h5"},
+          {"format", "hdf5"},
+          {"slices", slices.size()},
+          {"points", grid.points()},
+          {"datasets", {"t", "phi", "phi_t"}},
+          {"shape", shape},
+          {"order",
+           "datasets /phi and /phi_t of shape slices × N_{d−1} × … × N_0 × "
+           "components (axis 0 fastest); /t the times; each axis's first "
+           "point, step, points and kind as attributes axisA_first, axisA_dx, "
+           "axisA_points, axisA_kind"},
+          {"t", t}};
+}
+
+std::vector<std::string> WriteSlicePictures(
+    const fs::path& dir, const scene::FieldScene& s, const scene::FieldRun& run,
+    const std::vector<std::size_t>& slices, std::vector<std::string>& warnings,
+    nlohmann::json& pictures) {
+  std::vector<std::string> files;
+  const auto grid = s.Grid();
+  const std::string title = s.title.empty() ? s.source : s.title;
+  const std::string plane =
+      grid.dim() == 3
+          ? " (plane z = " +
+                std::to_string(grid.axis(2).x(grid.points(2) / 2)) + ")"
+          : "";
+  pictures = {{"heat_maps", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < s.output.heat_maps.size(); ++i) {
+    const std::size_t k = Nearest(run.solution.t, s.output.heat_maps[i]);
+    const std::string stem = "heat_map_" + std::to_string(i);
+    try {
+      report::SliceMap(dir, stem, PlaneOf(s, grid, run, k),
+                       {.title = title + plane});
+      files.push_back(stem + ".png");
+      pictures["heat_maps"].push_back(
+          {{"file", stem + ".png"}, {"t", run.solution.t[k]}});
+    } catch (const std::exception& e) {
+      warnings.push_back("no " + stem + ".png: " + e.what());
+    }
+  }
+  if (!s.output.animation) return files;
+  try {
+    // At most kFrames frames, evenly among the written slices (the first and
+    // last among them): a GIF of thousands of frames helps no one.
+    constexpr std::size_t kFrames = 120;
+    std::vector<report::Slice2d> frames;
+    const std::size_t n = slices.size();
+    for (std::size_t i = 0; i < std::min(n, kFrames); ++i) {
+      const std::size_t pick =
+          n <= kFrames ? i : (i * (n - 1) + (kFrames - 1) / 2) / (kFrames - 1);
+      frames.push_back(PlaneOf(s, grid, run, slices[pick]));
+    }
+    report::SliceAnimation(dir, "field", frames, {.title = title + plane});
+    files.push_back("field.gif");
+    pictures["animation"] = "field.gif";
+  } catch (const std::exception& e) {
+    warnings.push_back(std::string("no field.gif: ") + e.what());
+  }
+  return files;
+}
+
+}  // namespace vivp::apps
