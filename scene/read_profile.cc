@@ -90,11 +90,12 @@ void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
   const int m = s.components;
   const auto grid = s.Grid();
   std::vector<double> a(m), at_a(m), b(m), bt(m);
-  double jump = 0, jump_t = 0, x[3];
+  double jump = 0, jump_t = 0, worst = 0, x[3];
   std::string where;
   for (int axis = 0; axis < grid.dim(); ++axis) {
     const FieldAxis& line = s.Axis(axis);
     if (line.boundary != "periodic") continue;
+    double ja = 0;  // this axis's largest jump of φ or φ_t
     for (int j = 0; j < grid.points(); ++j) {
       if (grid.Coordinate(j, axis) != 0) continue;
       for (int c = 0; c < grid.dim(); ++c) x[c] = grid.x(j, c);
@@ -104,14 +105,16 @@ void CheckPeriodicJump(const TomlReader& r, const toml::node& at,
       for (int c = 0; c < m; ++c) {
         jump = std::max(jump, std::abs(b[c] - a[c]));
         jump_t = std::max(jump_t, std::abs(bt[c] - at_a[c]));
+        ja = std::max({ja, std::abs(b[c] - a[c]), std::abs(bt[c] - at_a[c])});
       }
     }
-    if (where.empty() && std::max(jump, jump_t) > 0)
-      where =
-          grid.dim() == 1
-              ? "[" + FormatNumber(line.x0) + ", " + FormatNumber(line.x1) + ")"
-              : std::string("axis ") + "xyz"[axis] + " [" +
-                    FormatNumber(line.x0) + ", " + FormatNumber(line.x1) + ")";
+    // The message names the axis of the largest jump.
+    if (ja <= worst) continue;
+    worst = ja;
+    const std::string range =
+        "[" + FormatNumber(line.x0) + ", " + FormatNumber(line.x1) + ")";
+    where = grid.dim() == 1 ? range
+                            : std::string("axis ") + "xyz"[axis] + " " + range;
   }
   s.initial.jump = jump;
   if (!(std::max(jump, jump_t) > kJumpTolerance * ProfileSize(s))) return;
