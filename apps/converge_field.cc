@@ -1,6 +1,8 @@
 // `vivp converge --field NAME`: the errors of φ at t = T and their fitted
 // orders in Δt over --points, or in Δx over a list of --space-points at one
-// --points, or the march under error control over a list of --tolerance
+// --points (on a grid, an entry NXxNY gives the points per axis and a single
+// N every axis; the order is in the Δx of the first axis that varies), or
+// the march under error control over a list of --tolerance
 // (studies/field_problems.h; docs/field_scenes.md §7). The JSON has the
 // shape of the point-mechanics study: rows, orders, orders_true_dt (or
 // tracking under error control).
@@ -8,6 +10,7 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "apps/command.h"
@@ -19,6 +22,42 @@
 namespace vivp::apps {
 
 namespace {
+
+// --space-points: comma-separated grids, each N (every axis) or NXxNY per
+// axis, for a problem of p.Dim() axes.
+std::vector<std::vector<long long>> ParseGrids(const std::string& list,
+                                               const studies::FieldProblem& p) {
+  const int d = p.Dim();
+  const std::string example = d == 1 ? "64,128" : "16x64,32x64,64x64";
+  return ParseList<std::vector<long long>>(
+      list, "--space-points",
+      d == 1 ? "whole numbers" : "grids N or NXxNY (one number per axis)",
+      example,
+      [&](const std::string& item) -> std::optional<std::vector<long long>> {
+        std::vector<long long> axes;
+        std::stringstream ss(item);
+        std::string part;
+        while (std::getline(ss, part, 'x')) {
+          std::size_t used = 0;
+          try {
+            axes.push_back(std::stoll(part, &used));
+          } catch (const std::exception&) {
+            return std::nullopt;
+          }
+          if (used != part.size()) return std::nullopt;
+        }
+        if (axes.size() == 1) axes.assign(std::size_t(d), axes[0]);
+        if (int(axes.size()) != d) return std::nullopt;
+        return axes;
+      });
+}
+
+// "64", or "16x64" on a grid.
+std::string GridText(const std::vector<long long>& points) {
+  std::string s;
+  for (long long n : points) s += (s.empty() ? "" : "x") + std::to_string(n);
+  return s;
+}
 
 // The study's options from the command line, every value checked before
 // any work, each refusal naming its option.
@@ -38,9 +77,11 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
   so.op = o.op;
   so.points = o.points_given ? ParsePoints(o.points, "--points")
                              : std::vector<long long>{17, 33, 65, 129};
-  so.space_points = o.space_points.empty()
-                        ? std::vector<long long>{p.space_points}
-                        : ParsePoints(o.space_points, "--space-points");
+  so.space_points =
+      o.space_points.empty()
+          ? std::vector<std::vector<long long>>{std::vector<long long>(
+                std::size_t(p.Dim()), p.space_points)}
+          : ParseGrids(o.space_points, p);
   so.space_order = o.space_order > 0 ? o.space_order : p.space_order;
   so.t_end = o.t_end;
   so.window_points = o.slab_points;
@@ -63,9 +104,9 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
   if (so.space_order % 2 || so.space_order < 2 || so.space_order > 8)
     throw UsageError("--space-order: expected 2, 4, 6 or 8, got " +
                      std::to_string(so.space_order));
-  for (long long nx : so.space_points) {
+  for (const auto& nx : so.space_points) {
     try {
-      (void)studies::FieldSpace(p, so.space_order, nx);
+      (void)studies::FieldGridOf(p, so.space_order, nx);
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--space-points: ") + e.what());
     }
@@ -78,15 +119,18 @@ studies::FieldStudyOptions FieldOptions(const ConvergeOptions& o,
     }
     const long long w =
         so.window_points > 0 ? std::min(so.window_points, nt) : nt;
-    for (long long nx : so.space_points)
+    for (const auto& grid : so.space_points) {
+      long long nx = 1;
+      for (long long n : grid) nx *= n;
       if (w * nx > spacetime::MaxSolvedAtOnce(so.op))
         throw UsageError("--points " + std::to_string(nt) +
-                         " with --space-points " + std::to_string(nx) + ": " +
+                         " with --space-points " + GridText(grid) + ": " +
                          std::to_string(w * nx) +
                          " values solved at once exceed the " +
                          std::to_string(spacetime::MaxSolvedAtOnce(so.op)) +
                          " allowed for " + so.op +
                          "; march in windows with --slab-points 16");
+    }
   }
   return so;
 }
@@ -104,20 +148,24 @@ std::string Cell(const std::string& text, int width = 11) {
 bool PrintFieldStudy(std::ostream& human, const studies::FieldProblem& p,
                      const studies::FieldStudyOptions& so,
                      const studies::FieldConvergenceStudy& study) {
-  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0][0]);
   human << p.name << " (" << p.description << "), " << so.op << ", "
         << dx.name() << " in space, t_end = " << so.t_end;
+  if (study.in_space && p.Dim() > 1)
+    human << ", refining axis "
+          << "xyz"[study.refined_axis];
   if (so.window_points > 0)
     human << ", marching in windows of " << so.window_points << " points";
   human << "\n"
-        << Cell("Nt", 7) << Cell("Nx", 7) << Cell(study.in_space ? "dx" : "dt")
-        << Cell("err φ") << Cell("err D_tφ") << Cell("err φ+λ4")
-        << Cell("err −λ3") << Cell("it", 6) << Cell("seconds", 10) << "\n";
+        << Cell("Nt", 7) << Cell("Nx", p.Dim() > 1 ? 10 : 7)
+        << Cell(study.in_space ? "dx" : "dt") << Cell("err φ")
+        << Cell("err D_tφ") << Cell("err φ+λ4") << Cell("err −λ3")
+        << Cell("it", 6) << Cell("seconds", 10) << "\n";
   int converged = 0;
   for (const auto& r : study.rows) {
-    human << std::setw(7) << r.points << std::setw(7) << r.space_points
-          << std::scientific << std::setprecision(2) << std::setw(11)
-          << (study.in_space ? r.dx : r.dt) << std::setw(11)
+    human << std::setw(7) << r.points << std::setw(p.Dim() > 1 ? 10 : 7)
+          << GridText(r.axis_points) << std::scientific << std::setprecision(2)
+          << std::setw(11) << (study.in_space ? r.dx : r.dt) << std::setw(11)
           << ErrorCell(r.converged, r.err_x) << std::setw(11)
           << ErrorCell(r.converged, r.err_v) << std::setw(11)
           << ErrorCell(r.converged, r.err_x_corrected) << std::setw(11)
@@ -153,6 +201,7 @@ nlohmann::json FieldRowsJson(const studies::FieldConvergenceStudy& study) {
   for (const auto& r : study.rows) {
     nlohmann::json row = ConvergenceRowJson(r);
     row["space_points"] = r.space_points;
+    row["axis_points"] = r.axis_points;
     row["dx"] = r.dx;
     row["windows"] = r.windows;
     rows.push_back(row);
@@ -164,8 +213,10 @@ nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
                               const studies::FieldStudyOptions& so,
                               const studies::FieldConvergenceStudy& study) {
   const nlohmann::json rows = FieldRowsJson(study);
-  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0][0]);
   nlohmann::json j = {{"field", p.name},
+                      {"axes", p.Dim()},
+                      {"refined_axis", study.refined_axis},
                       {"description", p.description},
                       {"reference", "exact"},
                       {"operator", so.op},
@@ -185,9 +236,9 @@ nlohmann::json FieldStudyJson(const studies::FieldProblem& p,
 bool PrintFieldTolerance(std::ostream& human, const studies::FieldProblem& p,
                          const studies::FieldStudyOptions& so,
                          const studies::FieldConvergenceStudy& study) {
-  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0][0]);
   human << p.name << " (" << p.description << "), " << so.op << ", "
-        << dx.name() << " in space, " << dx.points()
+        << dx.name() << " in space, " << GridText(so.space_points[0])
         << " points, t_end = " << so.t_end << ", error control in windows of "
         << (so.window_points > 0 ? so.window_points : 16)
         << " points (tolerance = absolute = relative)\n"
@@ -230,7 +281,7 @@ nlohmann::json FieldToleranceJson(const studies::FieldProblem& p,
                           {"ratio_min", JsonNumber(t.min_ratio)},
                           {"ratio_max", JsonNumber(t.max_ratio)}};
   };
-  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0]);
+  const auto dx = studies::FieldSpace(p, so.space_order, so.space_points[0][0]);
   return {{"field", p.name},
           {"description", p.description},
           {"reference", "exact"},

@@ -47,7 +47,7 @@
 //   points = [64, 64]                       # or 64 for both
 //   boundary = ["periodic", "neumann"]      # per axis; an axis's entry may
 //                                           # be [left, right]
-//   boundary_values = [[0, 0], [0, 0]]      # per axis, normal slopes
+//   boundary_values = [[0, 0], [0, 0]]      # per axis, ∂φ along it
 //   [initial]
 //   profile = "ring"                        # gaussian, ring, oscillon,
 //   radius = 6.0                            # plane_wave
@@ -90,8 +90,8 @@ struct FieldAxis {
   // both ends or "left/right" when they differ.
   std::string boundary = "periodic";
   std::array<std::string, 2> ends = {"natural", "natural"};
-  // φ (dirichlet) or the normal slope ∂φ (neumann) at the two ends, every
-  // component.
+  // φ (dirichlet) or the slope ∂φ along the axis (neumann) at the two
+  // ends, every component.
   std::array<double, 2> boundary_values = {0, 0};
   int space_order = 8;                   // periodic differences
   std::string space_operator = "sbp42";  // natural: an SBP operator

@@ -181,14 +181,15 @@ void ReadFieldPictures(const TomlReader& r, const toml::table& t,
     const std::string expected =
         "heat_maps = [t, …], times between 0 and end = " +
         FormatNumber(s.t_end);
-    if (!a) r.Fail(*n, "'heat_maps' must be a list of times", expected);
+    if (!a)
+      r.Fail(*n, "'heat_maps' must be a list of times", "expected " + expected);
     s.output.heat_maps = r.Numbers(*n, "heat_maps", a->size(), expected);
     for (std::size_t k = 0; k < a->size(); ++k)
       if (!(s.output.heat_maps[k] >= 0 && s.output.heat_maps[k] <= s.t_end))
         r.Fail(*a->get(k),
                "heat map time " + FormatNumber(s.output.heat_maps[k]) +
                    " is outside the run",
-               expected);
+               "expected " + expected);
   }
   if (const toml::node* n = t.get("animation")) {
     if (!n->is_boolean())

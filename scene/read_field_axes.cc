@@ -17,7 +17,7 @@ namespace {
 
 constexpr long long kMaxSpacePoints = 1LL << 16;  // per axis
 // Every slice of a 2+1- or 3+1-dimensional scene is kept in memory
-// (kMaxFieldValues): 2^22 points is a 256³ lattice or a 2048² plane.
+// (kMaxFieldValues): 2^22 points is a 2048² plane or a 161³ lattice.
 constexpr long long kMaxGridPoints = 1LL << 22;
 
 std::string AxisName(int a, int d) {
@@ -89,8 +89,8 @@ void ReadBoundaryValues(const TomlReader& r, const toml::node* v, int a, int d,
   const std::string expected =
       d == 1 ? "boundary_values = [left, right], φ at a dirichlet end or φ_x "
                "at a neumann one"
-             : "boundary_values = [[left, right], …], the normal slope at "
-               "the neumann faces of each axis";
+             : "boundary_values = [[left, right], …], the slope ∂φ along "
+               "each axis at its neumann faces";
   if (!v) return;
   const std::vector<double> x = r.Numbers(*v, "boundary_values", 2, expected);
   if (!data && (d == 1 || x[0] != 0 || x[1] != 0))
@@ -223,8 +223,8 @@ void ReadField(const TomlReader& r, const toml::table& root, FieldScene& s) {
       r.Fail(*AxisEntry(r, t, "boundary", a, d, false, ""),
              "dirichlet faces" + AxisName(a, d) +
                  " are not offered on grids of 2 or 3 axes",
-             "expected \"natural\" or \"neumann\" (a prescribed normal slope) "
-             "on that axis");
+             "expected \"natural\" or \"neumann\" (a prescribed slope ∂φ "
+             "along the axis) on that axis");
     ReadOperator(r, t, a, d, any_periodic, any_bounded, axis);
     ReadSpacePoints(r, *AxisEntry(r, t, "points", a, d, false, "[Nx, Ny, …]"),
                     a, d, axis);
