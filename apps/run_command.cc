@@ -24,6 +24,7 @@ struct RunCommandOptions {
   std::string out;
   bool force = false;
   bool quiet = false;
+  FieldRunControl field;  // --checkpoint, --resume, … of a field scene
 };
 
 // The output directory: --out, else named after the scene file.
@@ -44,8 +45,16 @@ int RunScene(const RunCommandOptions& o) {
           : scene::ReadAnyScene(o.scene);
   const fs::path out = RunOutputDirectory(o);
   CheckOutputDirectory(out, o.force);
+  FieldRunControl control = o.field;
+  control.force = o.force;
+  control.scene_file = o.scene;
   if (const auto* field = std::get_if<scene::FieldScene>(&any))
-    return RunFieldScene(*field, out, o.quiet);
+    return RunFieldScene(*field, out, o.quiet, control);
+  if (!control.checkpoint.empty() || !control.resume.empty() ||
+      control.stop_after >= 0)
+    throw UsageError(
+        "--checkpoint, --resume and --stop-after apply to field scenes (a "
+        "march in windows); this scene is point mechanics");
   const scene::Scene& s = std::get<scene::Scene>(any);
   const fs::path staging = MakeStagingDirectory(out);
   const StagingCleanup cleanup{staging};
@@ -131,6 +140,21 @@ Runner AddRunCommand(CLI::App& app) {
                 "write into an existing non-empty output directory, "
                 "overwriting the files of the same names");
   cmd->add_flag("--quiet", o->quiet, "no progress line on stderr");
+  cmd->add_option("--checkpoint", o->field.checkpoint,
+                  "field scene: write the march's state to this HDF5 file at "
+                  "window boundaries (refused if it exists, unless --force "
+                  "or it is the --resume file)");
+  cmd->add_option("--checkpoint-every", o->field.every,
+                  "seconds between checkpoints (default 60; 0: every window)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--stop-after", o->field.stop_after,
+                  "stop at the first window boundary after this many "
+                  "seconds, writing the checkpoint there (exit status 3)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--resume", o->field.resume,
+                  "continue a field run from this checkpoint: the fields are "
+                  "the uninterrupted run's, bit for bit; the output holds "
+                  "the slices from the checkpoint on");
   cmd->footer(scene::SchemaHelp() + "\n" + scene::FieldSchemaHelp());
   return [o] { return RunScene(*o); };
 }

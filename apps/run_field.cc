@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "apps/command.h"
@@ -191,16 +192,21 @@ std::vector<std::size_t> WrittenSlices(const scene::FieldScene& s,
                                        const scene::FieldRun& run) {
   std::vector<std::size_t> k;
   const std::size_t n = run.solution.t.size();
-  for (std::size_t i = 0; i < n; i += std::size_t(s.output.stride))
-    k.push_back(i);
-  if (n > 0 && k.back() != n - 1) k.push_back(n - 1);
+  // Every stride-th node of the whole run, so that a resumed run writes the
+  // slices the uninterrupted one does.
+  const auto stride = std::size_t(s.output.stride);
+  const std::size_t first =
+      (stride - std::size_t(run.first_node) % stride) % stride;
+  for (std::size_t i = first; i < n; i += stride) k.push_back(i);
+  if (n > 0 && (k.empty() || k.back() != n - 1)) k.push_back(n - 1);
   return k;
 }
 
 namespace {
 
 // The solve, with the progress line of a terminal: windows done of all.
-scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
+scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet,
+                                     const scene::FieldRunHooks& hooks) {
   std::atomic<int> done{0}, total{0};
   std::atomic<double> reached{0};
   ProgressLine progress(
@@ -213,11 +219,14 @@ scene::FieldRun SolveShowingProgress(const scene::FieldScene& s, bool quiet) {
         return line.str();
       },
       !quiet, [&] { return s.t_end > 0 ? reached.load() / s.t_end : 0.0; });
-  return scene::RunFieldScene(s, [&](int d, int n, double t) {
-    done = d;
-    total = n;
-    reached = t;
-  });
+  return scene::RunFieldScene(
+      s,
+      [&](int d, int n, double t) {
+        done = d;
+        total = n;
+        reached = t;
+      },
+      hooks);
 }
 
 // The title, the grids and the solver's account, for the reader.
@@ -297,10 +306,21 @@ nlohmann::json SolverJson(const spacetime::FieldSolution& sol) {
 
 }  // namespace
 
-int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
+int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
+                  const FieldRunControl& control) {
+  CheckFieldRunControl(s, control);
   for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
   const auto start = std::chrono::steady_clock::now();
-  const scene::FieldRun run = SolveShowingProgress(s, quiet);
+  std::optional<spacetime::FieldCheckpoint> resume;
+  if (!control.resume.empty()) resume = ReadResume(control);
+  scene::FieldRun run;
+  try {
+    run = SolveShowingProgress(
+        s, quiet,
+        MakeFieldRunHooks(control, resume ? &*resume : nullptr, start));
+  } catch (const FieldRunStopped& stop) {
+    return ReportStopped(stop, s, control);
+  }
   const auto& sol = run.solution;
   if (!sol.status.converged) {
     // The grid is the scene's: refused like any other bad value.
@@ -350,6 +370,11 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet) {
       {"diagnostics", diagnostics},
       {"layout", layout},
       {"pictures", pictures},
+      {"resumed_from", resume ? nlohmann::json{{"file", control.resume},
+                                               {"t", resume->t},
+                                               {"node", resume->node},
+                                               {"windows", resume->windows}}
+                              : nlohmann::json(nullptr)},
       {"written_slices", slices.size()},
       {"files", files},
       {"warnings", warnings}};

@@ -6,7 +6,9 @@
 // before anything is written. Private to apps/.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -16,8 +18,41 @@
 
 namespace vivp::apps {
 
+// Checkpoint and restart of a uniform march from the command line
+// (docs/field_scenes.md §5): checkpoints written to `checkpoint` (HDF5,
+// scene/field_hdf5.h) at window boundaries at most every `every` seconds
+// (0: at every boundary), the run stopped at the first boundary after
+// `stop_after` seconds (negative: never), and a run resumed from `resume`:
+// its fields are then those of the uninterrupted run, bit for bit, and its
+// output holds the slices from the checkpoint on.
+struct FieldRunControl {
+  std::string checkpoint;
+  double every = 60;
+  double stop_after = -1;
+  std::string resume;
+  bool force = false;      // overwrite an existing checkpoint file
+  std::string scene_file;  // for the message of a stopped run
+};
+
+// The checks of `control` against the scene (a UsageError each), the
+// checkpoint to resume from, the hooks that write checkpoints and stop, and
+// the message of a stopped run (run_field_checkpoint.cc).
+struct FieldRunStopped {
+  double t;
+  int windows;
+};
+void CheckFieldRunControl(const scene::FieldScene& s,
+                          const FieldRunControl& control);
+spacetime::FieldCheckpoint ReadResume(const FieldRunControl& control);
+scene::FieldRunHooks MakeFieldRunHooks(
+    const FieldRunControl& control, const spacetime::FieldCheckpoint* resume,
+    std::chrono::steady_clock::time_point start);
+int ReportStopped(const FieldRunStopped& stop, const scene::FieldScene& s,
+                  const FieldRunControl& control);
+
+// Exit status 3: stopped at a checkpoint as asked (--stop-after).
 int RunFieldScene(const scene::FieldScene& s, const std::filesystem::path& out,
-                  bool quiet);
+                  bool quiet, const FieldRunControl& control = {});
 int CheckFieldScene(const scene::FieldScene& s);
 
 // The slices of a run that are written: every stride-th and the last.

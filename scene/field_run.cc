@@ -54,7 +54,8 @@ double Column(const std::string& name, const action::FieldCharges& q) {
 
 template <int M, int d>
 FieldRun Run(const FieldScene& s,
-             const std::function<void(int, int, double)>& on_window) {
+             const std::function<void(int, int, double)>& on_window,
+             const FieldRunHooks& hooks) {
   const auto density = s.Density<M, d>();
   const auto grid = s.Grid();
   FieldRun run;
@@ -62,6 +63,8 @@ FieldRun Run(const FieldScene& s,
     for (int j = 0; j < grid.points(); ++j) run.x.push_back(grid.x(j, 0));
   spacetime::FieldSolveOptions options;
   options.on_window = on_window;
+  options.on_checkpoint = hooks.on_checkpoint;
+  options.resume = hooks.resume;
   options.boundary = s.Boundary();
   options.tolerance = s.method.tolerance;
   options.max_points = kMaxFieldValues / (grid.points() * M);
@@ -80,6 +83,7 @@ FieldRun Run(const FieldScene& s,
     run.solution =
         spacetime::SolveField(density, grid, time, s.phi0, s.phi_t0, options);
   const auto& sol = run.solution;
+  if (hooks.resume) run.first_node = hooks.resume->node;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();
   if (!sol.status.converged) return run;
   run.closure.assign(sol.t.size(), 0);
@@ -107,15 +111,19 @@ FieldRun Run(const FieldScene& s,
 }  // namespace
 
 FieldRun RunFieldScene(const FieldScene& s,
-                       const std::function<void(int, int, double)>& on_window) {
+                       const std::function<void(int, int, double)>& on_window,
+                       const FieldRunHooks& hooks) {
   const bool two = s.components == 2;
   switch (s.Dim()) {
     case 2:
-      return two ? Run<2, 2>(s, on_window) : Run<1, 2>(s, on_window);
+      return two ? Run<2, 2>(s, on_window, hooks)
+                 : Run<1, 2>(s, on_window, hooks);
     case 3:
-      return two ? Run<2, 3>(s, on_window) : Run<1, 3>(s, on_window);
+      return two ? Run<2, 3>(s, on_window, hooks)
+                 : Run<1, 3>(s, on_window, hooks);
     default:
-      return two ? Run<2, 1>(s, on_window) : Run<1, 1>(s, on_window);
+      return two ? Run<2, 1>(s, on_window, hooks)
+                 : Run<1, 1>(s, on_window, hooks);
   }
 }
 

@@ -27,6 +27,9 @@ struct FieldRun {
   // accurate (docs/fields.md §6): the march's last slice only, since where
   // two windows meet the slice is the corrected hand-off state (§4).
   std::vector<char> closure;
+  // The time node of the first kept slice: 0, or a resumed run's checkpoint
+  // node.
+  long long first_node = 0;
   // The corrected end state against the exact solution, NaN without one.
   double end_state_error = 0;
 };
@@ -34,8 +37,16 @@ struct FieldRun {
 // on_window(done, total, t) after each window (see FieldSolveOptions).
 // An under-resolved grid or a failed Newton solve returns
 // solution.status.converged = false with SolveField's reason.
+// A uniform march's checkpoints and its restart (solve.h,
+// FieldSolveOptions::on_checkpoint and ::resume).
+struct FieldRunHooks {
+  std::function<void(const spacetime::FieldCheckpoint&)> on_checkpoint;
+  const spacetime::FieldCheckpoint* resume = nullptr;
+};
+
 FieldRun RunFieldScene(
     const FieldScene& scene,
-    const std::function<void(int, int, double)>& on_window = {});
+    const std::function<void(int, int, double)>& on_window = {},
+    const FieldRunHooks& hooks = {});
 
 }  // namespace vivp::scene
