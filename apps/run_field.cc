@@ -347,7 +347,9 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
   std::vector<std::string> warnings;
   for (const auto& f : WriteFieldPlots(staging, s, run, warnings))
     files.push_back(f);
-  nlohmann::json pictures = nullptr;
+  nlohmann::json pictures = nullptr, spectra;
+  for (const auto& f : WriteSpectra(staging, s, run, warnings, spectra))
+    files.push_back(f);
   if (s.Dim() > 1)
     for (const auto& f :
          WriteSlicePictures(staging, s, run, slices, warnings, pictures))
@@ -370,6 +372,7 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
       {"diagnostics", diagnostics},
       {"layout", layout},
       {"pictures", pictures},
+      {"spectra", spectra},
       {"resumed_from", resume ? nlohmann::json{{"file", control.resume},
                                                {"t", resume->t},
                                                {"node", resume->node},

@@ -83,4 +83,13 @@ std::vector<std::string> WriteSlicePictures(
     const scene::FieldRun& run, const std::vector<std::size_t>& slices,
     std::vector<std::string>& warnings, nlohmann::json& pictures);
 
+// spectrum.csv and spectrum.png: P(k) of φ (component 0) at the slices
+// nearest the scene's spectra times, each checked against Parseval's
+// identity; described in `spectra` (for summary.json).
+std::vector<std::string> WriteSpectra(const std::filesystem::path& dir,
+                                      const scene::FieldScene& s,
+                                      const scene::FieldRun& run,
+                                      std::vector<std::string>& warnings,
+                                      nlohmann::json& spectra);
+
 }  // namespace vivp::apps

@@ -151,6 +151,7 @@ nlohmann::json FieldSceneJson(const FieldScene& s) {
             {"format", s.output.format},
             {"phi_t", s.output.phi_t},
             {"heat_maps", s.output.heat_maps},
+            {"spectra", s.output.spectra},
             {"animation", s.Dim() > 1 && s.output.animation}}}};
 }
 

@@ -56,6 +56,7 @@
 //   format = "hdf5"                         # the only format in d > 1
 //   heat_maps = [0.0, 5.0]                  # times of PNG heat maps
 //   animation = true                        # field.gif
+//   spectra = [0.0, 5.0]                    # P(k) of φ (periodic axes)
 #pragma once
 
 #include <array>
@@ -150,6 +151,7 @@ struct FieldScene : FieldAxis {
     bool phi_t = true;
     std::vector<double> heat_maps;  // d > 1: times of the PNG heat maps
     bool animation = true;          // d > 1: the GIF of the slices
+    std::vector<double> spectra;    // periodic axes: times of P(k) of φ
   } output;
   // "FILE:LINE:COL: " of [time] points, where an under-resolved grid is
   // reported, and warnings for the reader (an accepted jump).

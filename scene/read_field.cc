@@ -199,12 +199,37 @@ void ReadFieldPictures(const TomlReader& r, const toml::table& t,
   }
 }
 
+// spectra = [t, …]: times of the power spectrum of φ (every axis
+// periodic: the discrete Fourier transform needs it).
+void ReadSpectra(const TomlReader& r, const toml::table& t, FieldScene& s) {
+  const toml::node* n = t.get("spectra");
+  if (!n) return;
+  for (int a = 0; a < s.Dim(); ++a)
+    if (s.Axis(a).boundary != "periodic")
+      r.Fail(*n,
+             std::string("'spectra' needs periodic axes; axis ") + "xyz"[a] +
+                 " is " + s.Axis(a).boundary,
+             "expected boundary = \"periodic\" on every axis, or no spectra");
+  const std::string expected =
+      "spectra = [t, …], times between 0 and end = " + FormatNumber(s.t_end);
+  const toml::array* a = n->as_array();
+  if (!a)
+    r.Fail(*n, "'spectra' must be a list of times", "expected " + expected);
+  s.output.spectra = r.Numbers(*n, "spectra", a->size(), expected);
+  for (std::size_t k = 0; k < a->size(); ++k)
+    if (!(s.output.spectra[k] >= 0 && s.output.spectra[k] <= s.t_end))
+      r.Fail(*a->get(k),
+             "spectrum time " + FormatNumber(s.output.spectra[k]) +
+                 " is outside the run",
+             "expected " + expected);
+}
+
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,
                      FieldScene& s) {
   const toml::table& t = r.Table(root, "output", false);
-  r.CheckKeys(
-      t, "[output]",
-      {"diagnostics", "stride", "format", "phi_t", "heat_maps", "animation"});
+  r.CheckKeys(t, "[output]",
+              {"diagnostics", "stride", "format", "phi_t", "heat_maps",
+               "animation", "spectra"});
   if (const toml::node* n = t.get("stride"))
     s.output.stride = r.Whole(*n, "stride", 1, "a whole number >= 1");
   const bool grid = s.Dim() > 1;
@@ -218,6 +243,7 @@ void ReadFieldOutput(const TomlReader& r, const toml::table& root,
              "expected format = \"hdf5\" (or no format)");
   }
   ReadFieldPictures(r, t, s);
+  ReadSpectra(r, t, s);
   if (const toml::node* n = t.get("phi_t")) {
     if (!n->is_boolean())
       r.Fail(*n, "'phi_t' must be true or false, got " + TypeName(*n),

@@ -77,13 +77,16 @@ void Refused(const Run& r, const std::vector<std::string>& pieces) {
 
 BOOST_AUTO_TEST_CASE(PlaneWave_WritesHdf5HeatMapsAndGif) {
   Scratch s;
-  const Run r = s.RunScene("pw", Plane());
+  const Run r =
+      s.RunScene("pw", Plane("points = [16, 16]\n", "k = [1.0, 2.0]\n",
+                             "spectra = [0.0, 1.0]\n"));
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   const fs::path out = s.dir / "pw.out";
   for (const char* f :
        {"field.h5", "diagnostics.csv", "summary.json", "heat_map_0.png",
         "heat_map_1.png", "heat_map_2.png", "field.gif", "energy.png",
-        "momentum_x.png", "momentum_y.png", "error.png"})
+        "momentum_x.png", "momentum_y.png", "error.png", "spectrum.csv",
+        "spectrum.png"})
     BOOST_TEST(fs::exists(out / f), f);
   BOOST_TEST(!fs::exists(out / "field.csv"));
   const auto j = nlohmann::json::parse(Slurp(out / "summary.json"));
@@ -99,6 +102,14 @@ BOOST_AUTO_TEST_CASE(PlaneWave_WritesHdf5HeatMapsAndGif) {
   BOOST_TEST(j["diagnostics"]["error"]["max"].get<double>() < 3e-3);
   BOOST_TEST(j["diagnostics"]["error"]["end_state"].get<double>() <
              j["diagnostics"]["error"]["max"].get<double>());
+  // The wave's power A²/2 sits in the bin of |k| = √5 (bins of width 1 about
+  // 0, 1, 2, …), and the spectra add up to the mean square (Parseval).
+  BOOST_TEST(j["spectra"].size() == 2u);
+  BOOST_TEST(j["spectra"][0]["parseval_error"].get<double>() < 1e-12);
+  BOOST_TEST(j["spectra"][0]["mean_square"].get<double>() == 0.5,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(Slurp(out / "spectrum.csv").find("\n0,2,0.499999999999999") !=
+             std::string::npos);
   const double e0 = j["diagnostics"]["energy"]["initial"].get<double>();
   BOOST_TEST(j["diagnostics"]["energy"]["max_change_interior"].get<double>() <
              3e-4 * e0);
@@ -179,6 +190,11 @@ BOOST_AUTO_TEST_CASE(BadGridInput_IsRefusedWithNothingWritten) {
   Refused(s.RunScene("csv", Plane("points = 16\n", "k = [1.0, 2.0]\n",
                                   "format = \"csv\"\n")),
           {"format = 'csv' is for one axis", "expected format = \"hdf5\""});
+  Refused(
+      s.RunScene("spectra", Plane("points = 16\nboundary = [\"periodic\", "
+                                  "\"natural\"]\nspace_operator = \"sbp42\"\n",
+                                  "k = [1.0, 0.0]\n", "spectra = [0.5]\n")),
+      {"'spectra' needs periodic axes; axis y is natural"});
   Refused(s.RunScene("late", Plane("points = 16\n", "k = [1.0, 2.0]\n",
                                    "heat_maps = [0.5, 2.0]\n")),
           {"heat map time 2 is outside the run; expected heat_maps = [t, …]"});
@@ -188,7 +204,7 @@ BOOST_AUTO_TEST_CASE(BadGridInput_IsRefusedWithNothingWritten) {
           {"'breather' is not a valid profile",
            "expected one of gaussian, ring, oscillon, plane_wave"});
   for (const char* name : {"count", "empty", "four", "nan", "inf", "jump",
-                           "dirichlet", "csv", "late", "profile"})
+                           "dirichlet", "csv", "late", "profile", "spectra"})
     BOOST_TEST(s.Clean(name), name);
   // An output directory that holds a file: refused, the file kept.
   fs::create_directories(s.dir / "kept.out");
