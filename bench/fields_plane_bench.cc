@@ -1,6 +1,6 @@
 // Cost of the space-time field solve in 2 + 1 dimensions (solvers/spacetime
 // on an sbp::SpaceGrid of two periodic axes), on the sine-Gordon ring
-// soliton of Christiansen & Lomdahl ("Numerical study of 2+1 dimensional
+// soliton of Christiansen & Lomdahl ("Numerical solutions of 2+1 dimensional
 // sine-Gordon solitons", Physica D 2 (1981) 482): φ(0) = 4 atan(exp(3 − r)),
 // φ_t(0) = 0 on [−14, 14)², order-8 periodic differences.
 //

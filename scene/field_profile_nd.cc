@@ -3,7 +3,7 @@
 //
 //   gaussian    φ = A exp(−r²/(2σ²)), φ_t = 0 (no exact solution).
 //   ring        the sine-Gordon ring soliton of Christiansen & Lomdahl,
-//               "Numerical study of 2+1 dimensional sine-Gordon solitons"
+//               "Numerical solutions of 2+1 dimensional sine-Gordon solitons"
 //               (Physica D 2, 1981): a circular kink φ = 4 atan exp(R − r)
 //               at rest, which shrinks, collapses near the center and
 //               re-expands, radiating (no exact solution).
