@@ -67,6 +67,17 @@ std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
                                          const scene::FieldRun& run,
                                          std::vector<std::string>& warnings);
 
+// field.csv (t, x, φ[, φ_t] per row) or field.bin (float64, slice-major) of
+// a field on one axis, returning the file's layout for summary.json; and
+// diagnostics.csv (run_field_csv.cc).
+nlohmann::json WriteField(const std::filesystem::path& dir,
+                          const scene::FieldScene& s,
+                          const scene::FieldRun& run,
+                          const std::vector<std::size_t>& slices);
+void WriteDiagnostics(const std::filesystem::path& dir,
+                      const scene::FieldRun& run,
+                      const std::vector<std::size_t>& slices);
+
 // field.h5: the written slices (scene/field_hdf5.h); returns the file's
 // layout for summary.json.
 nlohmann::json WriteFieldHdf5(const std::filesystem::path& dir,
