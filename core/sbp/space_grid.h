@@ -109,6 +109,12 @@ class SpaceGrid {
     work.resize(2 * std::size_t(n));
     const std::span<T> line(work.data(), n), d(work.data() + n, n);
     ForEachLine(a, [&](int base) {
+      if (s == 1) {  // a line of axis 0 is contiguous: no copies
+        axes_[a].template Apply<T>(
+            u.subspan(std::size_t(base), std::size_t(n)),
+            out.subspan(std::size_t(base), std::size_t(n)));
+        return;
+      }
       for (int k = 0; k < n; ++k) line[k] = u[base + k * s];
       axes_[a].template Apply<T>(line, d);
       for (int k = 0; k < n; ++k) out[base + k * s] = d[k];
@@ -133,10 +139,10 @@ class SpaceGrid {
       for (int k = 0; k < n; ++k) line[k] = q[base + k * s];
       std::fill(acc.begin(), acc.end(), T(0));
       axes_[a].template AddTransposeH<T>(line, dq, acc);
-      for (int k = 0; k < n; ++k) {
-        const int j = base + k * s;
-        out[j] += T(NormWeightAcross(j, a)) * acc[k];
-      }
+      // The other axes' weights are those of the line's first point all
+      // along it.
+      const T across(NormWeightAcross(base, a));
+      for (int k = 0; k < n; ++k) out[base + k * s] += across * acc[k];
     });
   }
   template <class T>
