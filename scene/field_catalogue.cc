@@ -182,8 +182,18 @@ std::string FieldSchemaHelp() {
        "  [output]     diagnostics = []   "
     << detail::Join(FieldDiagnosticNames())
     << "\n"
-       "               stride = 1, format = \"csv\" | \"binary\", phi_t = "
-       "true\n\n"
+       "               stride = 1, format = \"csv\" | \"binary\" | \"hdf5\", "
+       "phi_t = true\n"
+       "               spectra = [t, ...]  periodic axes: P(k) of φ\n"
+       "               heat_maps = [t, ...], animation = true  grids: PNG "
+       "slices, field.gif\n"
+       "  On 2 or 3 axes: domain = [[x0, x1], [y0, y1]], points = [NX, NY] "
+       "(or N),\n"
+       "  boundary, boundary_values, space_order and space_operator per axis "
+       "(or one\n"
+       "  for all); profiles gaussian, ring, oscillon, plane_wave (center, k "
+       "per axis);\n"
+       "  output in HDF5 (docs/field_scenes.md §8).\n\n"
        "Terms (parameter = default):\n";
   for (const auto& t : FieldTermCatalogue()) {
     h << "  " << t.name << ": " << t.formula;

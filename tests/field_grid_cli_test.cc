@@ -257,3 +257,19 @@ BOOST_AUTO_TEST_CASE(ConvergeField_MeasuresTheOrderPerAxis) {
   Refused(bad, {"--space-points: expected a comma-separated list of grids N "
                 "or NXxNY (one number per axis)"});
 }
+
+// format = "hdf5" on one axis: field.h5 of shape slices × N × components
+// instead of field.csv, the 1+1-dimensional plots as before.
+BOOST_AUTO_TEST_CASE(OneAxis_WritesHdf5WhenAsked) {
+  Scratch s;
+  const Run r = s.RunScene(
+      "line", Plane("points = 32\n", "k = 1.0\n", "format = \"hdf5\"\n",
+                    "[[0.0, 6.283185307179586]]"));
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const fs::path out = s.dir / "line.out";
+  BOOST_TEST(fs::exists(out / "field.h5"));
+  BOOST_TEST(fs::exists(out / "field.png"));  // the space-time heat map
+  BOOST_TEST(!fs::exists(out / "field.csv"));
+  const auto j = nlohmann::json::parse(Slurp(out / "summary.json"));
+  BOOST_TEST(j["layout"]["shape"] == nlohmann::json({33, 32, 1}));
+}
