@@ -58,10 +58,9 @@ std::vector<std::vector<double>> HeatRows(const FieldSeries& f,
 void Palette(std::ostream& gp, const HeatMapStyle& style, double top) {
   gp << "set cblabel " << Quoted(style.label) << "\n";
   if (style.symmetric && top > 0)
-    gp << "set cbrange [" << -top << ":" << top << "]\n"
-       << "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n";
+    gp << "set cbrange [" << -top << ":" << top << "]\n" << kDivergingPalette;
   else
-    gp << "set palette viridis\n";
+    gp << kViridisPalette;
 }
 
 // One panel: axes, title and the image of rows written as STEM_NAME.dat.

@@ -123,8 +123,7 @@ void WriteSlice(std::ofstream& out, const Slice2d& s,
 }
 
 // The colour range, the palette (blue–white–red around zero, or viridis)
-// and the axes: everything but the title and the plot command. Viridis is
-// spelled out: gnuplot 5.4 has no `set palette viridis`.
+// and the axes: everything but the title and the plot command.
 void Frame(std::ostream& gp, const std::vector<const Slice2d*>& slices,
            const SliceMapStyle& style) {
   double lo = INFINITY, hi = -INFINITY;
@@ -147,10 +146,7 @@ void Frame(std::ostream& gp, const std::vector<const Slice2d*>& slices,
   gp << std::setprecision(17) << "set encoding utf8\n"
      << "set cblabel " << Quoted(style.label) << "\n"
      << "set cbrange [" << lo << ":" << hi << "]\n"
-     << (style.symmetric ? "set palette defined (0 '#2166ac', 0.5 "
-                           "'#f7f7f7', 1 '#b2182b')\n"
-                         : "set palette defined (0 '#440154', 0.25 '#3b528b', "
-                           "0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n")
+     << (style.symmetric ? kDivergingPalette : kViridisPalette)
      << "set xlabel 'x'\nset ylabel 'y'\n"
      << "set xrange [" << s.x.front() << ":" << s.x.back() << "]\n"
      << "set yrange [" << s.y.front() << ":" << s.y.back() << "]\n";

@@ -42,6 +42,15 @@ class Figure {
   std::ostringstream script_;
 };
 
+// gnuplot palettes of the heat maps: blue–white–red around zero for a
+// signed field, and viridis (spelled out: gnuplot 5.4 has no `set palette
+// viridis`).
+inline constexpr const char* kDivergingPalette =
+    "set palette defined (0 '#2166ac', 0.5 '#f7f7f7', 1 '#b2182b')\n";
+inline constexpr const char* kViridisPalette =
+    "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', "
+    "0.75 '#5ec962', 1 '#fde725')\n";
+
 // s as a gnuplot string: in double quotes, with quotes and backslashes
 // escaped and a line break as gnuplot writes it.
 std::string Quoted(const std::string& s);
