@@ -78,6 +78,9 @@ void WriteDiagnostics(const std::filesystem::path& dir,
                       const scene::FieldRun& run,
                       const std::vector<std::size_t>& slices);
 
+// The index of the kept time nearest to `time` (heat maps, spectra).
+std::size_t Nearest(const std::vector<double>& t, double time);
+
 // field.h5: the written slices (scene/field_hdf5.h); returns the file's
 // layout for summary.json.
 nlohmann::json WriteFieldHdf5(const std::filesystem::path& dir,

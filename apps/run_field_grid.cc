@@ -38,15 +38,14 @@ report::Slice2d PlaneOf(const scene::FieldScene& s,
   return out;
 }
 
-// The kept slice nearest to time t.
+}  // namespace
+
 std::size_t Nearest(const std::vector<double>& t, double time) {
   std::size_t best = 0;
   for (std::size_t k = 1; k < t.size(); ++k)
     if (std::abs(t[k] - time) < std::abs(t[best] - time)) best = k;
   return best;
 }
-
-}  // namespace
 
 nlohmann::json WriteFieldHdf5(const fs::path& dir, const scene::FieldScene& s,
                               const scene::FieldRun& run,

@@ -28,9 +28,7 @@ std::vector<std::string> WriteSpectra(const std::filesystem::path& dir,
   std::vector<double> k;
   std::vector<std::pair<std::string, std::vector<double>>> curves;
   for (double want : s.output.spectra) {
-    std::size_t best = 0;
-    for (std::size_t i = 1; i < sol.t.size(); ++i)
-      if (std::abs(sol.t[i] - want) < std::abs(sol.t[best] - want)) best = i;
+    const std::size_t best = Nearest(sol.t, want);
     const std::span<const double> slice(sol.phi.data() + best * per, per);
     const auto bins = spacetime::PowerSpectrum(grid, slice, m, 0);
     double total = 0, mean_square = 0;

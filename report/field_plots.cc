@@ -25,17 +25,6 @@ void CheckSeries(const FieldSeries& f, int component) {
         " points × " + std::to_string(f.components) + " components");
 }
 
-// Indices 0, k, 2k, … and always the last one, at most `most` of them.
-std::vector<std::size_t> Thin(std::size_t n, int most) {
-  const std::size_t k =
-      std::max<std::size_t>(1, (n + std::size_t(std::max(most, 2)) - 2) /
-                                   std::size_t(std::max(most - 1, 1)));
-  std::vector<std::size_t> idx;
-  for (std::size_t i = 0; i < n; i += k) idx.push_back(i);
-  if (idx.back() != n - 1) idx.push_back(n - 1);
-  return idx;
-}
-
 // The thinned rows (x, t, φ) of a heat map and the largest |φ| among them.
 std::vector<std::vector<double>> HeatRows(const FieldSeries& f,
                                           const HeatMapStyle& style,

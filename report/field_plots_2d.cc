@@ -60,18 +60,6 @@ void CheckSlice(const Slice2d& s, int component) {
           std::to_string(p / s.x.size()) + ")");
 }
 
-// Indices 0, k, 2k, … and always the last one, at most `most` of them (as
-// the 1+1-D heat maps thin theirs).
-std::vector<std::size_t> Thin(std::size_t n, int most) {
-  const std::size_t k =
-      std::max<std::size_t>(1, (n + std::size_t(std::max(most, 2)) - 2) /
-                                   std::size_t(std::max(most - 1, 1)));
-  std::vector<std::size_t> idx;
-  for (std::size_t i = 0; i < n; i += k) idx.push_back(i);
-  if (idx.back() != n - 1) idx.push_back(n - 1);
-  return idx;
-}
-
 // `most` indices spread evenly over 0 … n - 1, the first and last among
 // them (all n when n ≤ most). Frames are thinned this way rather than every
 // k-th: 121 slices then make 120 frames, not 61.

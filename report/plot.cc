@@ -86,4 +86,14 @@ std::string Quoted(const std::string& s) {
   return "\"" + q + "\"";
 }
 
+std::vector<std::size_t> Thin(std::size_t n, int most) {
+  const std::size_t k =
+      std::max<std::size_t>(1, (n + std::size_t(std::max(most, 2)) - 2) /
+                                   std::size_t(std::max(most - 1, 1)));
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < n; i += k) idx.push_back(i);
+  if (idx.back() != n - 1) idx.push_back(n - 1);
+  return idx;
+}
+
 }  // namespace vivp::report

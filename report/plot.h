@@ -51,6 +51,10 @@ inline constexpr const char* kViridisPalette =
     "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', "
     "0.75 '#5ec962', 1 '#fde725')\n";
 
+// Indices 0, k, 2k, … of n and always the last one, at most `most` of them:
+// the rows of a plot's data file thinned.
+std::vector<std::size_t> Thin(std::size_t n, int most);
+
 // s as a gnuplot string: in double quotes, with quotes and backslashes
 // escaped and a line break as gnuplot writes it.
 std::string Quoted(const std::string& s);

@@ -160,6 +160,24 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
              " values solved at once: " + fix);
 }
 
+// KEY = [t, …], times in [0, end]; `what` names one in a refusal.
+std::vector<double> ReadTimes(const TomlReader& r, const toml::node& n,
+                              const std::string& key, const std::string& what,
+                              const FieldScene& s) {
+  const std::string expected =
+      key + " = [t, …], times between 0 and end = " + FormatNumber(s.t_end);
+  const toml::array* a = n.as_array();
+  if (!a)
+    r.Fail(n, Quote(key) + " must be a list of times", "expected " + expected);
+  const std::vector<double> times = r.Numbers(n, key, a->size(), expected);
+  for (std::size_t k = 0; k < a->size(); ++k)
+    if (!(times[k] >= 0 && times[k] <= s.t_end))
+      r.Fail(*a->get(k),
+             what + " time " + FormatNumber(times[k]) + " is outside the run",
+             "expected " + expected);
+  return times;
+}
+
 // heat_maps = [t, …] and animation = true|false, pictures of the slices of
 // a field on 2 or 3 axes (a 1+1-dimensional field has its space-time heat
 // map); by default heat maps at the start, middle and end, and the GIF.
@@ -176,21 +194,8 @@ void ReadFieldPictures(const TomlReader& r, const toml::table& t,
                  " (field.png is the space-time heat map)");
   if (!grid) return;
   s.output.heat_maps = {0.0, 0.5 * s.t_end, s.t_end};
-  if (const toml::node* n = t.get("heat_maps")) {
-    const toml::array* a = n->as_array();
-    const std::string expected =
-        "heat_maps = [t, …], times between 0 and end = " +
-        FormatNumber(s.t_end);
-    if (!a)
-      r.Fail(*n, "'heat_maps' must be a list of times", "expected " + expected);
-    s.output.heat_maps = r.Numbers(*n, "heat_maps", a->size(), expected);
-    for (std::size_t k = 0; k < a->size(); ++k)
-      if (!(s.output.heat_maps[k] >= 0 && s.output.heat_maps[k] <= s.t_end))
-        r.Fail(*a->get(k),
-               "heat map time " + FormatNumber(s.output.heat_maps[k]) +
-                   " is outside the run",
-               "expected " + expected);
-  }
+  if (const toml::node* n = t.get("heat_maps"))
+    s.output.heat_maps = ReadTimes(r, *n, "heat_maps", "heat map", s);
   if (const toml::node* n = t.get("animation")) {
     if (!n->is_boolean())
       r.Fail(*n, "'animation' must be true or false, got " + TypeName(*n),
@@ -210,18 +215,7 @@ void ReadSpectra(const TomlReader& r, const toml::table& t, FieldScene& s) {
              std::string("'spectra' needs periodic axes; axis ") + "xyz"[a] +
                  " is " + s.Axis(a).boundary,
              "expected boundary = \"periodic\" on every axis, or no spectra");
-  const std::string expected =
-      "spectra = [t, …], times between 0 and end = " + FormatNumber(s.t_end);
-  const toml::array* a = n->as_array();
-  if (!a)
-    r.Fail(*n, "'spectra' must be a list of times", "expected " + expected);
-  s.output.spectra = r.Numbers(*n, "spectra", a->size(), expected);
-  for (std::size_t k = 0; k < a->size(); ++k)
-    if (!(s.output.spectra[k] >= 0 && s.output.spectra[k] <= s.t_end))
-      r.Fail(*a->get(k),
-             "spectrum time " + FormatNumber(s.output.spectra[k]) +
-                 " is outside the run",
-             "expected " + expected);
+  s.output.spectra = ReadTimes(r, *n, "spectra", "spectrum", s);
 }
 
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,

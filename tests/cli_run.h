@@ -48,6 +48,13 @@ inline CliRun RunVivp(const std::string& args) {
 }
 #endif
 
+// The whole text of a file (empty if it cannot be read).
+inline std::string Slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)),
+                     std::istreambuf_iterator<char>());
+}
+
 // A scratch directory of this test process (PREFIX and the process id in
 // the temporary directory), removed with everything in it at the end.
 struct ScratchDirectory {

@@ -23,6 +23,7 @@ namespace {
 
 using Run = vivp::testing::CliRun;
 using vivp::testing::Lines;
+using vivp::testing::Slurp;
 
 struct Scratch : vivp::testing::ScratchDirectory {
   Scratch() : ScratchDirectory("vivp_field_cli_") {}
@@ -42,12 +43,6 @@ struct Scratch : vivp::testing::ScratchDirectory {
     return !fs::exists(dir / (name + ".out"));
   }
 };
-
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
-}
 
 // Klein–Gordon (m = 1) on [0, L) periodic, 32 points, SBP42 to t = 1.
 std::string KleinGordon(

@@ -23,6 +23,7 @@ namespace {
 
 using Run = vivp::testing::CliRun;
 using vivp::testing::Lines;
+using vivp::testing::Slurp;
 
 struct Scratch : vivp::testing::ScratchDirectory {
   Scratch() : ScratchDirectory("vivp_field_grid_cli_") {}
@@ -40,12 +41,6 @@ struct Scratch : vivp::testing::ScratchDirectory {
     return !fs::exists(dir / (name + ".out"));
   }
 };
-
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
-}
 
 // Klein–Gordon (m = 1) on the periodic square [0, 2π)², a plane wave along
 // k, SBP42 to t = 1 in windows of 9; `field` replaces the [field] table's

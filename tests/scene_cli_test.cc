@@ -25,11 +25,7 @@ namespace {
 
 using Run = vivp::testing::CliRun;
 
-std::string Slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string((std::istreambuf_iterator<char>(in)),
-                     std::istreambuf_iterator<char>());
-}
+using vivp::testing::Slurp;
 
 // A scratch directory of this test process, removed at the end.
 struct Scratch {
