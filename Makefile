@@ -15,8 +15,13 @@ VIVP_CXX ?=
 
 all: build
 
+# `make test` also installs OpenMPI and FFTW-MPI and so builds and tests the
+# march across ranks; `make demo` runs on one process without them.
+DEPS_FLAGS ?=
+test: DEPS_FLAGS = --distributed
+
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(DEPS_FLAGS)
 
 configure: deps
 	@cxx="$(VIVP_CXX)"; [ -n "$$cxx" ] || cxx=$$(command -v clang++ || command -v c++); \

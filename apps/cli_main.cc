@@ -9,6 +9,7 @@
 
 #include "apps/command.h"
 #include "scene/scene.h"
+#include "solvers/distributed/comm.h"
 
 namespace vivp::apps {
 
@@ -38,22 +39,30 @@ int Main(int argc, char** argv) {
     std::cerr << "vivp: error: " << e.what() << " (see 'vivp --help')\n";
     return 2;
   }
+  // Under mpirun every rank meets the same bad input: rank 0 says so.
+  auto report = [](const std::string& line, int status) {
+    if (vivp::distributed::Comm::World().root()) std::cerr << line << "\n";
+    return status;
+  };
   try {
+    // Every rank of an MPI run would do the same work and write the same
+    // files: only a field scene's march is spread over them.
+    if (vivp::distributed::Comm::World().size() > 1 &&
+        !app.got_subcommand("run"))
+      throw vivp::apps::UsageError(
+          "only `vivp run` of a field scene runs on several ranks; run this "
+          "command without mpirun");
     for (const auto& [name, run] : commands)
       if (app.got_subcommand(name)) return run();
   } catch (const vivp::scene::SceneError& e) {
     // Already FILE:LINE:COL: what is wrong; what is expected.
-    std::cerr << e.what() << "\n";
-    return 2;
+    return report(e.what(), 2);
   } catch (const vivp::apps::UsageError& e) {
-    std::cerr << "vivp: error: " << e.what() << "\n";
-    return 2;
+    return report(std::string("vivp: error: ") + e.what(), 2);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "vivp: error: " << e.what() << "\n";
-    return 2;
+    return report(std::string("vivp: error: ") + e.what(), 2);
   } catch (const std::exception& e) {
-    std::cerr << "vivp: failed: " << e.what() << "\n";
-    return 1;
+    return report(std::string("vivp: failed: ") + e.what(), 1);
   }
   return 0;
 }

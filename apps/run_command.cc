@@ -13,6 +13,7 @@
 #include "scene/field_scene.h"
 #include "scene/run.h"
 #include "scene/scene.h"
+#include "solvers/distributed/comm.h"
 
 namespace vivp::apps {
 namespace {
@@ -50,6 +51,10 @@ int RunScene(const RunCommandOptions& o) {
   control.scene_file = o.scene;
   if (const auto* field = std::get_if<scene::FieldScene>(&any))
     return RunFieldScene(*field, out, o.quiet, control);
+  if (distributed::Comm::World().size() > 1)
+    throw UsageError(
+        "a point-mechanics scene runs on one process: run it without mpirun "
+        "(only field scenes on 2 or 3 axes spread over ranks)");
   if (!control.checkpoint.empty() || !control.resume.empty() ||
       control.stop_after >= 0)
     throw UsageError(

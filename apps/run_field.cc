@@ -16,6 +16,7 @@
 #include "apps/command.h"
 #include "apps/run_progress.h"
 #include "apps/run_sink.h"
+#include "solvers/distributed/comm.h"
 
 namespace vivp::apps {
 
@@ -195,6 +196,9 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
           << Rounded(sol.min_step) << " … " << Rounded(sol.max_step) << ", "
           << sol.rejected << " windows rejected)";
   if (sol.windows > 1) human << ", " << sol.windows << " windows";
+  if (sol.ranks > 0)
+    human << ", space on " << sol.ranks
+          << (sol.ranks == 1 ? " rank" : " ranks");
   // The mode solve keeps its factorization across windows: Newton steps
   // and factorizations are two counts.
   human << ": " << sol.status.reason << ", " << sol.corrections
@@ -202,6 +206,7 @@ void PrintRun(std::ostream& human, const scene::FieldScene& s,
         << Rounded(sol.seconds_total) << " s\n"
         << "  Δt·ω_max = " << Rounded(sol.omega_dt) << " (limit "
         << Rounded(sol.limit) << ")\n";
+  if (!sol.unchecked.empty()) human << "  note: " << sol.unchecked << "\n";
 }
 
 nlohmann::json SolverJson(const spacetime::FieldSolution& sol) {
@@ -209,6 +214,7 @@ nlohmann::json SolverJson(const spacetime::FieldSolution& sol) {
           {"newton_iterations", sol.factorizations},
           {"corrections", sol.corrections},
           {"linear_solver", sol.linear_solver},
+          {"ranks", sol.ranks},
           {"mode_factorizations", sol.mode_factorizations},
           {"sparse_lu_fallbacks", sol.fallbacks},
           {"march_fallbacks", sol.march_fallbacks},
@@ -225,15 +231,21 @@ nlohmann::json SolverJson(const spacetime::FieldSolution& sol) {
 int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
                   const FieldRunControl& control) {
   CheckFieldRunControl(s, control);
-  for (const auto& w : s.warnings) std::cerr << "vivp: warning: " << w << "\n";
+  // Under mpirun every rank solves its slab; rank 0 alone reports and writes.
+  const auto& comm = distributed::Comm::World();
+  if (!comm.root()) quiet = true;
+  if (comm.root())
+    for (const auto& w : s.warnings)
+      std::cerr << "vivp: warning: " << w << "\n";
   const auto start = std::chrono::steady_clock::now();
   std::optional<spacetime::FieldCheckpoint> resume;
   if (!control.resume.empty()) resume = ReadResume(control);
   scene::FieldRun run;
+  scene::FieldRunHooks hooks =
+      MakeFieldRunHooks(control, resume ? &*resume : nullptr, start);
+  if (distributed::Launched()) hooks.comm = &comm;
   try {
-    run = SolveShowingProgress(
-        s, quiet,
-        MakeFieldRunHooks(control, resume ? &*resume : nullptr, start));
+    run = SolveShowingProgress(s, quiet, hooks);
   } catch (const FieldRunStopped& stop) {
     return ReportStopped(stop, s, control);
   }
@@ -242,10 +254,12 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
     // The grid is the scene's: refused like any other bad value.
     if (sol.status.reason.rfind("under-resolved", 0) == 0)
       throw scene::SceneError(s.where_time_points + sol.status.reason);
+    if (!comm.root()) return 1;
     std::cerr << "vivp: the solve did not converge: " << sol.status.reason
               << "; nothing was written\n";
     return 1;
   }
+  if (!comm.root()) return 0;
   const fs::path staging = MakeStagingDirectory(out);
   const StagingCleanup cleanup{staging};
   const auto slices = WrittenSlices(s, run);
@@ -284,7 +298,16 @@ int RunFieldScene(const scene::FieldScene& s, const fs::path& out, bool quiet,
       {"grid", GridJson(s, run)},
       {"resolution", {{"omega_dt", sol.omega_dt}, {"limit", sol.limit}}},
       {"solver", SolverJson(sol)},
-      {"seconds", {{"solve", sol.seconds_total}, {"total", seconds}}},
+      {"seconds",
+       {{"solve", sol.seconds_total},
+        {"total", seconds},
+        {"residuals", sol.seconds_residual},
+        {"blocks_or_assembly", sol.seconds_assembly},
+        {"factorizations", sol.seconds_factor},
+        {"linear_solves", sol.seconds_solve},
+        {"predictor", sol.seconds_predictor},
+        {"handoff", sol.seconds_handoff},
+        {"checks", sol.seconds_check}}},
       {"diagnostics", diagnostics},
       {"layout", layout},
       {"pictures", pictures},

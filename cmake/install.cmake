@@ -12,7 +12,8 @@ include(CMakePackageConfigHelpers)
 
 # The libraries as vivp::NAME, in the tree (aliases) and installed (export
 # names), so that a CMakeLists reads the same in both places.
-set(_vivp_libraries core problems variational steppers bea spacetime solvers studies
+set(_vivp_libraries core problems variational steppers bea spacetime distributed
+                    solvers studies
                     scene report)
 foreach(lib IN LISTS _vivp_libraries)
   add_library(vivp::${lib} ALIAS vivp_${lib})

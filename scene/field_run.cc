@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/action/field_charges.h"
 #include "core/sbp/builder.h"
+#include "solvers/distributed/composed.h"
 #include "solvers/spacetime/composed.h"
 
 namespace vivp::scene {
@@ -76,12 +78,20 @@ FieldRun Run(const FieldScene& s,
                                   .t_end = s.t_end,
                                   .window_points = s.method.window_points};
   // One axis: the solver compiled for the derivative (composed.h).
-  if constexpr (d == 1)
+  if constexpr (d == 1) {
+    if (hooks.comm && hooks.comm->size() > 1)
+      throw std::invalid_argument(
+          "a field on one axis runs on one rank: run it without mpirun (or "
+          "with -np 1)");
     run.solution = spacetime::SolveField(density, s.Space(), time, s.phi0,
                                          s.phi_t0, options);
-  else
+  } else if (hooks.comm) {
+    run.solution = distributed::SolveField(*hooks.comm, density, grid, time,
+                                           s.phi0, s.phi_t0, options);
+  } else {
     run.solution =
         spacetime::SolveField(density, grid, time, s.phi0, s.phi_t0, options);
+  }
   const auto& sol = run.solution;
   if (hooks.resume) run.first_node = hooks.resume->node;
   run.end_state_error = std::numeric_limits<double>::quiet_NaN();

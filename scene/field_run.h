@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/field_scene.h"
+#include "solvers/distributed/comm.h"
 #include "solvers/spacetime/solve.h"
 
 namespace vivp::scene {
@@ -39,9 +40,14 @@ struct FieldRun {
 // solution.status.converged = false with SolveField's reason.
 // A uniform march's checkpoints and its restart (solve.h,
 // FieldSolveOptions::on_checkpoint and ::resume).
+// With `comm`, a grid of 2 or 3 axes is marched with space spread over its
+// ranks (solvers/distributed/solve.h; every rank calls RunFieldScene, and
+// only rank 0's FieldRun holds the slices and diagnostics); a field on one
+// axis is refused when there is more than one rank.
 struct FieldRunHooks {
   std::function<void(const spacetime::FieldCheckpoint&)> on_checkpoint;
   const spacetime::FieldCheckpoint* resume = nullptr;
+  const distributed::Comm* comm = nullptr;
 };
 
 FieldRun RunFieldScene(

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages vivp builds against, and only those that are missing.
+# Installs the Debian packages vivp builds against, and only those that are missing
+# (install-deps.sh [--distributed]).
 # Idempotent and non-interactive: when everything is present it makes no apt call at all.
 set -euo pipefail
 
@@ -11,6 +12,13 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libginac-dev
   libsuitesparse-dev libfftw3-dev libhdf5-dev hdf5-tools
 )
+
+# `--distributed` (make test): also OpenMPI and FFTW's MPI transforms, for
+# the march across ranks (docs/distributed.md). `make demo` does not need
+# them: without them the build runs every field march on one process.
+if [[ ${1:-} == --distributed ]]; then
+  packages+=(openmpi-bin libopenmpi-dev libfftw3-mpi-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -43,23 +43,27 @@ struct PointLagrangian {
 
 }  // namespace detail
 
-// v: the system's fields at y (FieldSystem::Fields).
+// v: the system's fields at y (FieldSystem::Fields). With a range, only the
+// points [begin, end) (one rank's of a distributed window, whose other
+// points are its halo), value (j − begin)·m + a.
 template <class Density>
 FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
-                         const double* y,
-                         const action::FieldValues<double>& v) {
+                         const double* y, const action::FieldValues<double>& v,
+                         int begin = 0, int end = -1) {
   constexpr int m = Density::kDim;
-  const int last = system.time_points() - 1, nx = system.space_points();
+  const int last = system.time_points() - 1;
+  if (end < 0) end = system.space_points();
   FieldEnd e;
-  e.phi.resize(static_cast<std::size_t>(nx) * m);
+  e.phi.resize(static_cast<std::size_t>(end - begin) * m);
   e.phi_t.resize(e.phi.size());
-  for (int j = 0; j < nx; ++j) {
+  for (int j = begin; j < end; ++j) {
+    const int k = (j - begin) * m;
     if (system.Fixed(j)) {
       // A Dirichlet point's column is the data (field_boundary.h): its end
       // state is the last node and D̄_t there; no multipliers to correct by.
       for (int a = 0; a < m; ++a) {
-        e.phi[j * m + a] = v.phi[system.At(last, j, a)];
-        e.phi_t[j * m + a] = v.phi_t[system.At(last, j, a)];
+        e.phi[k + a] = v.phi[system.At(last, j, a)];
+        e.phi_t[k + a] = v.phi_t[system.At(last, j, a)];
       }
       continue;
     }
@@ -76,8 +80,8 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
         lagrangian, 2, &v.phi[system.At(last, j, 0)],
         &v.phi_t[system.At(last, j, 0)], lambda3, lambda4);
     for (int a = 0; a < m; ++a) {
-      e.phi[j * m + a] = c.position[a];
-      e.phi_t[j * m + a] = c.velocity[a];
+      e.phi[k + a] = c.position[a];
+      e.phi_t[k + a] = c.velocity[a];
     }
     e.phi_estimate = std::max(e.phi_estimate, c.position_error_estimate);
     e.phi_t_estimate = std::max(e.phi_t_estimate, c.velocity_error_estimate);

@@ -27,6 +27,7 @@
 #include "solvers/spacetime/predictor.h"
 #include "solvers/spacetime/resolution.h"
 #include "solvers/spacetime/window_data.h"
+#include "solvers/spacetime/window_parts.h"
 #include "solvers/spacetime/window_solver.h"
 #include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
@@ -104,14 +105,13 @@ class FieldWindow {
              const variational::InitialData& initial,
              const std::vector<double>& px, const std::vector<double>& pv,
              bool fresh, bool nodes) {
-    using variational::detail::WindowFailure;
     auto lap = Clock::now();
     const int points = a.points, nx = grid_.points();
     // The system is kept while the window's operator is (its work arrays
     // are a window's size: allocating them per window cost page faults).
-    if (Operators(points, a.dt) || !system_)
-      system_ = std::make_unique<System>(density_, *dbar_, grid_, initial.x,
-                                         initial.v);
+    if (time_.Set(op_, points, a.dt) || !system_)
+      system_ = std::make_unique<System>(density_, *time_.dbar, grid_,
+                                         initial.x, initial.v);
     else
       system_->SetInitial(initial.x, initial.v);
     detail::SetBoundaryData(*system_, options_.boundary, t0, a.dt);
@@ -150,22 +150,10 @@ class FieldWindow {
     const auto r = options_.linear == WindowLinearSolver::kModes
                        ? variational::Newton<double>(sys, y_, newton, modes_)
                        : variational::Newton<double>(sys, y_, newton, sparse_);
-    a.iterations = r.iterations;
-    a.corrections = r.corrections;
-    timings_.residual += r.phases.residual;
-    timings_.assembly += r.phases.assembly;
-    timings_.factorization += r.phases.factorization;
-    timings_.solve += r.phases.solve;
-    residual_ = std::max(residual_, r.last_residual);
-    if (!r.converged) {
-      a.residual = r.last_residual;
-      a.failure = WindowFailure::kNewton;
-      a.why = r.reason;
-      return false;
-    }
+    if (!detail::AccountNewton(r, a, timings_, residual_)) return false;
     lap = Clock::now();
     sys.Fields(y_.data(), values_);
-    const auto& D = dbar_->base();
+    const auto& D = time_.dbar->base();
     const int last = points - 1;
     // x_N and (D φ)_N with the plain operator, as the connection rows.
     column_.resize(points);
@@ -179,36 +167,16 @@ class FieldWindow {
         }
         a.x_end[k] = column_[last];
         a.v_end[k] = D.ApplyRow(last, column_.data());
-        a.roundoff_v[k] = std::numeric_limits<double>::epsilon() * row_sum_ *
-                          D.inv_dt() * xmax;
+        a.roundoff_v[k] = std::numeric_limits<double>::epsilon() *
+                          time_.row_sum * D.inv_dt() * xmax;
       }
-    if (options_.check_resolution) {
-      const auto t_check = Clock::now();
-      // ω at the start: the last window's at its end when this window
-      // continues from its hand-off (the same state up to the correction).
-      const bool continues =
-          omega_end_ >= 0 && initial.x == handed_x_ && initial.v == handed_v_;
-      const double omega_start =
-          continues ? omega_end_
-                    : FastestFrequency(initial.x.data(), initial.v.data());
-      omega_end_ = FastestFrequency(a.x_end.data(), a.v_end.data());
-      omega_dt_ = std::max(omega_dt_, a.dt * std::max(omega_start, omega_end_));
-      // The rule of SolveField's check before the march (resolution.h), at
-      // either end of the window.
-      const double limit = variational::StabilityLimit(op_);
-      std::string why =
-          UnderResolved(op_, limit, a.dt, omega_start, t0, options_.t_end);
-      if (why.empty())
-        why = UnderResolved(op_, limit, a.dt, omega_end_,
-                            t0 + a.dt * double(last), options_.t_end);
-      timings_.check += Since(t_check);
-      if (!why.empty()) {
-        omega_end_ = -1;
-        a.failure = WindowFailure::kUnderResolved;
-        a.why = std::move(why);
-        return false;
-      }
-    }
+    if (options_.check_resolution &&
+        !resolution_.Check(
+            [this](const double* x, const double* v) {
+              return FastestFrequency(x, v);
+            },
+            a, t0, initial, op_, options_.t_end, timings_.check))
+      return false;
     const FieldEnd e = CorrectFieldEnd(sys, y_.data(), values_);
     a.end.position = e.phi;
     a.end.velocity = e.phi_t;
@@ -232,8 +200,7 @@ class FieldWindow {
       a.x = values_.phi;
       a.v = values_.phi_t;
     }
-    handed_x_ = a.end.position;
-    handed_v_ = a.end.velocity;
+    resolution_.Handed(a.end.position, a.end.velocity);
     last_phi_ = a.x_end;
     last_estimates_ = {e.phi_estimate, e.phi_t_estimate};
     timings_.handoff += Since(lap);
@@ -256,11 +223,11 @@ class FieldWindow {
   // uninterrupted one bit for bit.
   using Carry = FieldWindowCarry;
   Carry Save() const {
-    return {dbar_ ? dbar_->points() : 0, dt_,
+    return {time_.dbar ? time_.dbar->points() : 0, time_.dt,
             predictor_ ? predictor_->first_step() : 0.0, modes_.Save()};
   }
   void Restore(const Carry& c) {
-    if (c.points > 0) Operators(c.points, c.dt);
+    if (c.points > 0) time_.Set(op_, c.points, c.dt);
     if (predictor_) predictor_->set_first_step(c.predictor_step);
     modes_.Restore(c.modes);
   }
@@ -279,7 +246,7 @@ class FieldWindow {
   int fallbacks() const { return int(modes_.fallbacks); }
   std::size_t factor_bytes() const { return modes_.factor_bytes(); }
   long long jacobian_nonzeros() const { return sparse_.nonzeros(); }
-  double omega_dt() const { return omega_dt_; }
+  double omega_dt() const { return resolution_.omega_dt(); }
   double residual_norm() const { return residual_; }
   const FieldTimings& timings() const { return timings_; }
   // φ at the last node of the last solved window (uncorrected), and that
@@ -290,22 +257,6 @@ class FieldWindow {
  private:
   static double Since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
-  }
-
-  // The time operator of a window of `points` nodes spaced dt, kept while
-  // they stay (a step within 64 ε of the last is the same step: the windows
-  // of a uniform march differ in the last bits); true if it was rebuilt.
-  bool Operators(int points, double dt) {
-    if (dbar_ && dbar_->points() == points &&
-        std::abs(dt - dt_) <= 64 * std::numeric_limits<double>::epsilon() * dt_)
-      return false;
-    dt_ = dt;
-    dbar_ = std::make_unique<sbp::RegularizedOperator<double>>(
-        sbp::MakeOperator<double>(op_, points, 0.0, dt * double(points - 1)));
-    row_sum_ = 0;
-    for (double w : dbar_->base().row(points - 1).coeffs)
-      row_sum_ += std::abs(w);
-    return true;
   }
 
   const Density& density_;
@@ -320,13 +271,12 @@ class FieldWindow {
   SparseLuSolver sparse_;
   int sparse_points_ = -1;
   long long sparse_retired_ = 0;
-  std::unique_ptr<sbp::RegularizedOperator<double>> dbar_;
-  double dt_ = 0, row_sum_ = 0;
-  std::unique_ptr<System> system_;  // of the last solve (refers to dbar_)
+  detail::WindowOperator time_;
+  std::unique_ptr<System> system_;  // of the last solve (refers to time_)
   std::vector<double> y_, momentum_, column_, last_phi_;
   action::FieldValues<double> values_;
-  std::vector<double> handed_x_, handed_v_;
-  double omega_end_ = -1, omega_dt_ = 0, residual_ = 0;
+  detail::WindowResolution resolution_;
+  double residual_ = 0;
   std::pair<double, double> last_estimates_{0, 0};
   FieldTimings timings_;
 };

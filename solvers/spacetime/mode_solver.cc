@@ -120,7 +120,8 @@ void FillTimeSystem(Sink& sink, int nt, int m, double s, const DensityBlocks& b,
 
 }  // namespace
 
-bool ModeSolver::Factor(const DensityBlocks& blocks) {
+bool ModeSolver::Factor(const DensityBlocks& blocks,
+                        const std::vector<char>* needed) {
   for (const auto* b : {&blocks.ltt, &blocks.lxx, &blocks.lpp})
     if (b->rows() != m_ || b->cols() != m_ || !b->allFinite())
       throw std::invalid_argument(
@@ -146,6 +147,7 @@ bool ModeSolver::Factor(const DensityBlocks& blocks) {
   for (int q = 0; q < modes_->count(); ++q)
     s[modes_->system_of(q)] = modes_->eigenvalue(q);
   for (int k = 0; k < modes_->distinct(); ++k) {
+    if (needed && !(*needed)[k]) continue;
     matrices_[k] = linalg::BandedMatrix<double>(n, kl_, ku_);
     FillTimeSystem(matrices_[k], nt_, m_, s[k], blocks_, kt_, ht_, d_first_,
                    d_last_, last_first_);
@@ -196,6 +198,15 @@ void ModeSolver::Solve(double* b) const {
   }
   modes_->Inverse(b, B, B);
   if (eliminate) Multipliers(b);
+}
+
+void ModeSolver::SolveMode(int q, double* block) const {
+  const int B = Block(), nm = nt_ * m_;
+  work_.resize(2 * std::size_t(B));
+  std::copy(block + nm, block + B, work_.begin());
+  std::copy(block, block + nm, work_.begin() + 2 * m_);
+  lu_[modes_->system_of(q)]->Solve(work_.data());
+  std::copy(work_.begin(), work_.begin() + B, block);
 }
 
 // Before the modes: the Dirichlet columns are the μ rows of b (φ(t_i, x_b)

@@ -66,12 +66,18 @@ class ModeSolver {
              const sbp::SpaceGrid<double>& grid, int m, const bool dirichlet[2],
              std::shared_ptr<const GridModes> modes);
 
-  // Builds and factors the time system of every distinct mode; false if one
-  // is singular (its mode in message()).
-  bool Factor(const DensityBlocks& blocks);
+  // Builds and factors the time system of every distinct mode (with
+  // `needed`, only the systems k with needed[k]: the modes one rank of a
+  // distributed solve holds); false if one is singular (its mode in
+  // message()).
+  bool Factor(const DensityBlocks& blocks,
+              const std::vector<char>* needed = nullptr);
   // b ← J⁻¹ b in the field system's layout (Nx blocks of (W + 2)m, then the
   // Dirichlet multipliers).
   void Solve(double* b) const;
+  // One mode's block of (2) in the point layout (φ(i, a), λ3, λ4), already
+  // transformed: the banded solve of its system alone.
+  void SolveMode(int q, double* block) const;
 
   int size() const;
   int time_points() const { return nt_; }

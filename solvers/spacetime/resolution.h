@@ -89,16 +89,18 @@ inline double SpectralRadius(const sbp::SpaceGrid<double>& grid) {
 // ω_max of the linearization about the state (φ, φ_t) on the grid; rho is
 // SpectralRadius(grid), a property of the grid computed once per solve. In
 // d dimensions C is the largest of the axes' blocks −∂²L/∂(∂_bφ)², exact
-// for an isotropic density without mixed gradient blocks.
+// for an isotropic density without mixed gradient blocks. With a range, the
+// largest over the points [begin, end) (one rank's of a distributed march).
 template <class Density>
 double FastestFieldFrequency(const Density& density,
                              const sbp::SpaceGrid<double>& grid, double rho,
                              std::span<const double> phi,
-                             std::span<const double> phi_t) {
+                             std::span<const double> phi_t, int begin = 0,
+                             int end = -1) {
   constexpr int m = Density::kDim;
   constexpr int d = action::SpaceDimOf<Density>();
   constexpr int K = (2 + d) * m;
-  const int n = grid.points();
+  const int n = end < 0 ? grid.points() : end;
   std::vector<double> phi_x(phi.size() * d);
   sbp::SpaceGrid<double>::GradientWork<double> work;
   grid.Gradient<double>(m, phi, phi_x, work);
@@ -106,7 +108,7 @@ double FastestFieldFrequency(const Density& density,
   // One component: the eigenvalues are quotients; more: the small dense
   // solver (its allocations were a tenth of this check's time for m = 1).
   Eigen::MatrixXd mass(m, m), c(m, m), k(m, m);
-  for (int j = 0; j < n; ++j) {
+  for (int j = begin; j < n; ++j) {
     double z[K];
     for (int a = 0; a < m; ++a) {
       z[a] = phi[j * m + a];

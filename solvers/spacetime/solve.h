@@ -47,9 +47,11 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/sbp/builder.h"
@@ -128,6 +130,7 @@ struct FieldSolution {
   // (empty: every window was).
   std::string unchecked;
   std::string linear_solver;  // "modes" or "sparse-lu"
+  int ranks = 0;  // the processes space was spread over; 0: not distributed
   // The space-diagonalized solve: time systems factored (one per distinct
   // spatial mode and factorization), the bytes its factors hold, and the
   // windows that fell back to the sparse LU.
@@ -147,12 +150,16 @@ struct FieldSolution {
          seconds_handoff = 0, seconds_predictor = 0, seconds_total = 0;
 };
 
-template <class Density>
-FieldSolution SolveField(const Density& density,
-                         const sbp::SpaceGrid<double>& space,
-                         const FieldGrid& grid, std::vector<double> phi0,
-                         std::vector<double> pi0,
-                         const FieldSolveOptions& options = {}) {
+// The march with the window `make(options, φ0, π0)` returns (a
+// std::unique_ptr): FieldWindow on one process, or the slab of one rank of
+// a distributed march (solvers/distributed/solve.h).
+template <class Density, class MakeWindow>
+FieldSolution SolveFieldWith(const Density& density,
+                             const sbp::SpaceGrid<double>& space,
+                             const FieldGrid& grid, std::vector<double> phi0,
+                             std::vector<double> pi0,
+                             const FieldSolveOptions& options,
+                             MakeWindow&& make) {
   constexpr int m = Density::kDim;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -229,7 +236,9 @@ FieldSolution SolveField(const Density& density,
   const FieldWindowOptions wo{options.newton,           options.linear,
                               options.sparse,           options.boundary,
                               options.check_resolution, grid.t_end};
-  FieldWindow<Density> window(density, space, grid.op, wo, phi0, pi0);
+  const auto window_owner = make(wo, phi0, pi0);
+  auto& window = *window_owner;
+  using Window = std::remove_reference_t<decltype(window)>;
   s.unchecked = window.unchecked();
   variational::MarchOptions mo;
   const long long all = adaptive ? 0 : grid.points;
@@ -294,12 +303,12 @@ FieldSolution SolveField(const Density& density,
   variational::InitialData state{std::move(phi0), std::move(pi0)};
   bool ok;
   if (adaptive) {
-    variational::detail::AdaptiveMarch<FieldWindow<Density>> march(
-        window, g, mo, keep, out, table.min_points);
+    variational::detail::AdaptiveMarch<Window> march(window, g, mo, keep, out,
+                                                     table.min_points);
     ok = march.Run(state);
   } else {
-    variational::detail::UniformMarch<FieldWindow<Density>> march(
-        window, g, mo, keep, out, table.min_points);
+    variational::detail::UniformMarch<Window> march(window, g, mo, keep, out,
+                                                    table.min_points);
     ok = march.Run(state);
   }
   for (auto& e : s.window_ends) e = std::min(e, s.t.size() - 1);
@@ -345,6 +354,21 @@ FieldSolution SolveField(const Density& density,
   s.status.seconds = s.seconds_total;
   s.status.last_residual = ok ? s.residual_norm : out.last_residual;
   return s;
+}
+
+template <class Density>
+FieldSolution SolveField(const Density& density,
+                         const sbp::SpaceGrid<double>& space,
+                         const FieldGrid& grid, std::vector<double> phi0,
+                         std::vector<double> pi0,
+                         const FieldSolveOptions& options = {}) {
+  return SolveFieldWith(
+      density, space, grid, std::move(phi0), std::move(pi0), options,
+      [&](const FieldWindowOptions& wo, const std::vector<double>& x0,
+          const std::vector<double>& v0) {
+        return std::make_unique<FieldWindow<Density>>(density, space, grid.op,
+                                                      wo, x0, v0);
+      });
 }
 
 // A field of one spatial axis.

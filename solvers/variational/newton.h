@@ -39,7 +39,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/linalg/banded.h"
@@ -90,6 +92,14 @@ bool AllFinite(const std::vector<Real>& v) {
   for (const Real& x : v)
     if (!std::isfinite(x)) return false;
   return true;
+}
+// A System spread over processes (solvers/distributed/window.h) holds part
+// of y and F: it provides ReduceMax(std::span<double>), the largest of each
+// value over all of them, so that every process takes the same decision.
+// Any other System: the values are its own.
+template <class System>
+void GlobalMax(const System& system, std::span<double> v) {
+  if constexpr (requires { system.ReduceMax(v); }) system.ReduceMax(v);
 }
 inline double Since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
@@ -203,14 +213,18 @@ NewtonReport Newton(
     else
       system.Residual(y.data(), f.data());
     report.phases.residual += clock.Since(t0);
-    return detail::AllFinite(f);
+    double finite[1] = {detail::AllFinite(f) ? 0.0 : 1.0};
+    detail::GlobalMax(system, finite);
+    return finite[0] == 0.0;
   };
   auto finish = [&](bool ok, std::string why) {
     report.converged = ok;
     report.reason = std::move(why);
-    report.last_residual = detail::AllFinite(f)
-                               ? double(detail::MaxAbs(f))
-                               : std::numeric_limits<double>::quiet_NaN();
+    double last[2] = {detail::AllFinite(f) ? 0.0 : 1.0,
+                      detail::AllFinite(f) ? double(detail::MaxAbs(f)) : 0.0};
+    detail::GlobalMax(system, last);
+    report.last_residual =
+        last[0] == 0.0 ? last[1] : std::numeric_limits<double>::quiet_NaN();
     report.phases.total = detail::Since(start);
     report.seconds = report.phases.total;
     return report;
@@ -258,6 +272,12 @@ NewtonReport Newton(
         step = std::max(step, std::abs(delta[i]));
         y[i] -= delta[i];
         ymax = std::max(ymax, std::abs(y[i]));
+      }
+      if constexpr (std::is_same_v<Real, double>) {
+        double global[2] = {step, ymax};
+        detail::GlobalMax(system, global);
+        step = global[0];
+        ymax = global[1];
       }
       ++report.corrections;
       report.last_step = double(step);
