@@ -137,7 +137,9 @@ Runner AddRunCommand(CLI::App& app) {
       "Solve a scene (a TOML file of effects, initial data, time span, method "
       "and outputs) or a field scene ([field] and [[term]] tables, "
       "docs/field_scenes.md); without SCENE the default scene (Rothkopf & "
-      "Nordström 2023, Fig. 14)");
+      "Nordström 2023, Fig. 14). Started by mpirun (mpirun -np N vivp run "
+      "SCENE), a field scene on a periodic grid of 2 or 3 axes is spread over "
+      "the ranks (docs/distributed.md)");
   cmd->add_option("scene", o->scene, "scene file (TOML)");
   cmd->add_option("--out", o->out,
                   "output directory (default: SCENE-STEM.out, default.out)");

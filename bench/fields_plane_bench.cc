@@ -11,7 +11,10 @@
 // 2. (--ring N T [W [F]]) The ring marched to T on N² points, SBP42 in
 //    windows of W (16) at F (0.9) of the resolution limit: time, Newton
 //    iterations, fallbacks, microseconds per site and time step, peak memory,
-//    energy at 0 and T.
+//    energy at 0 and T. Started by mpirun (`mpirun -np 2
+//    fields_plane_bench --ring N T W F`), the same march with space spread
+//    over the ranks (solvers/distributed/solve.h); rank 0 prints, and the
+//    peak memory is per rank.
 // 3. (--compare) Work at equal error on 64² points to t = 2 against the
 //    method of lines on the same spatial operator (leapfrog, Gauss4): the
 //    error of φ at t = 2 against a Gauss6 run of 4096 steps (time error
@@ -19,6 +22,8 @@
 //
 // Usage: fields_plane_bench [--ring N T [W [F]]] [--compare]   (default: table
 // 1)
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,6 +36,7 @@
 #include "core/action/field_charges.h"
 #include "core/action/field_system.h"
 #include "problems/fields/densities.h"
+#include "solvers/distributed/solve.h"
 #include "solvers/spacetime/method_of_lines.h"
 #include "solvers/spacetime/resolution.h"
 #include "solvers/spacetime/solve.h"
@@ -108,14 +114,18 @@ void Table1() {
 }
 
 void Ring(int n, double t_end, int w, double fraction) {
-  std::printf(
-      "Sine-Gordon ring on %d² points to t = %g (SBP42, windows of %d, Δt at\n"
-      "%g of the resolution limit)\n\n"
-      "| time points | Δt | windows | Newton its | fallbacks | seconds | "
-      "μs per site·step | E(0) | E(T) | converged |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n",
-      n, t_end, w, fraction);
-  const double mb = bench::PeakMegabytesInChild([&] {
+  const auto& comm = distributed::Comm::World();
+  const bool spread = distributed::Launched();
+  if (comm.root())
+    std::printf(
+        "Sine-Gordon ring on %d² points to t = %g (SBP42, windows of %d, Δt "
+        "at\n"
+        "%g of the resolution limit)\n\n"
+        "| time points | Δt | windows | Newton its | fallbacks | seconds | "
+        "μs per site·step | E(0) | E(T) | converged |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n",
+        n, t_end, w, fraction);
+  auto run = [&] {
     const Density density;
     const Grid g = RingGrid(n);
     std::vector<double> phi0, pi0;
@@ -129,15 +139,20 @@ void Ring(int n, double t_end, int w, double fraction) {
     spacetime::FieldSolveOptions o;
     o.keep_field = false;
     const auto start = std::chrono::steady_clock::now();
-    o.on_window = [&](int done, int total, double t) {
-      const double s = Since(start);
-      std::fprintf(stderr, "\r  window %d/%d, t = %.2f, %.0f s, ETA %.0f s ",
-                   done, total, t, s, s * (total - done) / done);
-    };
+    if (comm.root())
+      o.on_window = [&](int done, int total, double t) {
+        const double s = Since(start);
+        std::fprintf(stderr, "\r  window %d/%d, t = %.2f, %.0f s, ETA %.0f s ",
+                     done, total, t, s, s * (total - done) / done);
+      };
     const spacetime::FieldGrid fg{
         .op = "sbp42", .points = nt, .t_end = t_end, .window_points = w};
-    const auto r = spacetime::SolveField(density, g, fg, phi0, pi0, o);
+    const auto r =
+        spread ? distributed::SolveField(comm, density, g, fg, phi0, pi0, o)
+               : spacetime::SolveField(density, g, fg, phi0, pi0, o);
+    if (!comm.root()) return;
     std::fprintf(stderr, "\n");
+    if (spread) std::printf("(space on %d ranks)\n", comm.size());
     const auto e0 = action::ChargesOfSlice(density, g, phi0, pi0);
     const auto e1 = r.status.converged ? action::ChargesOfSlice(
                                              density, g, r.end.phi, r.end.phi_t)
@@ -154,8 +169,19 @@ void Ring(int n, double t_end, int w, double fraction) {
         r.seconds_residual, r.seconds_assembly, r.seconds_factor,
         r.seconds_solve, r.seconds_setup, r.seconds_predictor, r.seconds_check,
         r.seconds_handoff, r.corrections, r.predictor_steps);
-  });
-  std::printf("peak MB of the run: %.0f\n\n", mb);
+  };
+  if (!spread) {
+    std::printf("peak MB of the run: %.0f\n\n",
+                bench::PeakMegabytesInChild(run));
+    return;
+  }
+  // No fork under MPI: this process's own peak, per rank, on rank 0.
+  run();
+  struct rusage usage {};
+  getrusage(RUSAGE_SELF, &usage);
+  double mb[1] = {usage.ru_maxrss / 1024.0};
+  comm.Max(mb);
+  if (comm.root()) std::printf("peak MB of a rank: %.0f\n\n", mb[0]);
 }
 
 void Compare() {
@@ -216,6 +242,7 @@ void Compare() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const distributed::Session mpi(&argc, &argv);
   if (argc >= 2 && std::strcmp(argv[1], "--ring") == 0) {
     const int n = argc >= 3 ? std::atoi(argv[2]) : 512;
     const double t = argc >= 4 ? std::atof(argv[3]) : 50.0;
