@@ -81,8 +81,7 @@ FieldRun Run(const FieldScene& s,
   if constexpr (d == 1) {
     if (hooks.comm && hooks.comm->size() > 1)
       throw std::invalid_argument(
-          "a field on one axis runs on one rank: run it without mpirun (or "
-          "with -np 1)");
+          "a field on one axis runs on one process: run it without mpirun");
     run.solution = spacetime::SolveField(density, s.Space(), time, s.phi0,
                                          s.phi_t0, options);
   } else if (hooks.comm) {

@@ -107,7 +107,7 @@ profile = "gaussian"
 end = 1.0
 points = 33
 TOML
-refuse one_axis 2 "one axis runs on one rank" run "$tmp/line.toml" \
+refuse one_axis 2 "one axis runs on one process" run "$tmp/line.toml" \
   --out "$tmp/one_axis"
 refuse point_scene 2 "point-mechanics scene runs on one process" run \
   --out "$tmp/point_scene"

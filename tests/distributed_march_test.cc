@@ -68,7 +68,7 @@ void Compare(std::vector<int> n) {
                        << " ranks: end states differ by " << worst << " (size "
                        << size << ")");
   // Both stop at round-off (32 ε of the largest unknown, newton.h) from
-  // different starts: the predictor's path and φ₀ + τφ_t0.
+  // different starts: the predictor's path and the Taylor path.
   BOOST_TEST(worst < 1e-11 * std::max(1.0, size));
   if (comm.root()) {
     BOOST_REQUIRE(spread.phi.size() == one.phi.size());
@@ -121,5 +121,5 @@ BOOST_AUTO_TEST_CASE(refusals_name_the_fix) {
   // Grids that do not divide over the ranks, and slabs thinner than the
   // halo, need two ranks or more: tests/distributed_cli_test.sh.
   BOOST_TEST(Refusal(Grid(SpaceDerivative<double>::Periodic(4, 16, 0, 1)))
-                 .find("one axis runs on one rank") != std::string::npos);
+                 .find("one axis runs on one process") != std::string::npos);
 }

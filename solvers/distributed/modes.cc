@@ -13,7 +13,8 @@ std::shared_ptr<const spacetime::GridModes> PeriodicModes(
     if (!grid.axis(a).periodic())
       throw std::invalid_argument(
           "the distributed mode solve needs periodic axes; axis " +
-          std::to_string(a) + " is an interval (run on one rank)");
+          std::to_string(a) +
+          " is an interval (run it on one process, without mpirun)");
   return std::make_shared<const spacetime::GridModes>(grid);
 }
 

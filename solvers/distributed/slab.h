@@ -58,13 +58,14 @@ class Slab {
     const int d = grid.dim(), P = comm.size();
     if (d < 2)
       throw std::invalid_argument(
-          "a field on one axis runs on one rank; spread a grid of 2 or 3 "
-          "axes over ranks");
+          "a field on one axis runs on one process (without mpirun); "
+          "spread a grid of 2 or 3 axes over ranks");
     for (int a = 0; a < d; ++a)
       if (!grid.axis(a).periodic())
         throw std::invalid_argument(
             "on several ranks every axis must be periodic; axis " +
-            std::to_string(a) + " is an interval (run it on one rank)");
+            std::to_string(a) +
+            " is an interval (run it on one process, without mpirun)");
     const auto& slow = grid.axis(d - 1);
     const int n = slow.points();
     plane_ = grid.stride(d - 1);

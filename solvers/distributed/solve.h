@@ -33,7 +33,9 @@ spacetime::FieldSolution SolveField(const Comm& comm, const Density& density,
                                     std::vector<double> pi0,
                                     spacetime::FieldSolveOptions options = {}) {
   auto refuse = [](const std::string& what) {
-    throw std::invalid_argument(what + " runs on one rank, not across ranks");
+    throw std::invalid_argument(
+        what +
+        " is not built across ranks: run it on one process, without mpirun");
   };
   if (options.tolerance.enabled()) refuse("error control (a tolerance)");
   if (options.on_checkpoint || options.resume) refuse("a checkpointed march");

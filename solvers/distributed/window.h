@@ -16,7 +16,8 @@
 // as are the nodes the march keeps.
 //
 // No independent integration starts and checks the windows here (the
-// predictor runs on one process): Newton starts from φ₀ + τφ_t0, and
+// predictor runs on one process): Newton starts from the Taylor path
+// φ₀ + τφ_t0 + ½τ²φ̈₀ and λ3 at its end momentum, and
 // FieldSolution::unchecked says so. The resolution limit is checked at
 // every window's ends as on one process.
 #pragma once
@@ -26,7 +27,9 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +41,7 @@
 #include "solvers/distributed/slab.h"
 #include "solvers/spacetime/density_blocks.h"
 #include "solvers/spacetime/end_state.h"
+#include "solvers/spacetime/method_of_lines.h"
 #include "solvers/spacetime/resolution.h"
 #include "solvers/spacetime/window_data.h"
 #include "solvers/spacetime/window_parts.h"

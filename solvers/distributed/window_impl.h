@@ -37,17 +37,22 @@ class DistributedWindow {
   }
   const std::string& unchecked() const { return unchecked_; }
 
-  // No independent integration: the Newton start φ₀ + τφ_t0 and no bound
-  // (the checks then pass; FieldSolution::unchecked says so).
+  // No independent integration: the Newton start is the Taylor path of
+  // window_parts.h (the same on every rank: each holds the whole slice), and
+  // no bound (the checks then pass; FieldSolution::unchecked says so).
   variational::PredictorReport Predict(double, const double* x0,
                                        const double* v0, const double* tau,
                                        int points, double, double, double* px,
                                        double* pv) {
-    for (int i = 0; i < points; ++i)
-      for (int k = 0; k < n_; ++k) {
-        px[std::size_t(i) * n_ + k] = x0[k] + tau[i] * v0[k];
-        pv[std::size_t(i) * n_ + k] = v0[k];
-      }
+    const auto lap = Clock::now();
+    const double* acc = nullptr;
+    if (Accelerate(x0, v0)) {
+      acc_.resize(n_);
+      (*accel_)(std::span<const double>(x0, n_), acc_);
+      acc = acc_.data();
+    }
+    spacetime::detail::TaylorStart(x0, v0, acc, tau, points, n_, px, pv);
+    timings_.predictor += Since(lap);
     variational::PredictorReport r;
     r.error_x = r.error_v = std::numeric_limits<double>::infinity();
     return r;
@@ -55,7 +60,7 @@ class DistributedWindow {
 
   bool Solve(variational::detail::WindowAttempt& a, double t0,
              const variational::InitialData& initial,
-             const std::vector<double>& px, const std::vector<double>&,
+             const std::vector<double>& px, const std::vector<double>& pv,
              bool fresh, bool nodes) {
     auto lap = Clock::now();
     const int points = a.points, own = slab_.own_points();
@@ -73,6 +78,18 @@ class DistributedWindow {
         for (int c = 0; c < m; ++c)
           y_[std::size_t(j) * system_->block() + i * m + c] =
               px[std::size_t(i) * n_ + (first + j) * m + c];
+    // λ3 at minus the start path's end momentum M φ_t (window_impl.h's
+    // Gather reads the momentum back as −λ3).
+    if (accel_) {
+      const double* v = &pv[std::size_t(points - 1) * n_];
+      for (int j = 0; j < own; ++j) {
+        const Eigen::Map<const Eigen::Matrix<double, m, 1>> vj(
+            v + std::size_t(first + j) * m);
+        Eigen::Map<Eigen::Matrix<double, m, 1>> lambda3(
+            &y_[std::size_t(j) * system_->block() + points * m]);
+        lambda3 = -mass_ * vj;
+      }
+    }
     timings_.setup += Since(lap);
     if (fresh) solver_.Invalidate();
     const auto r =
@@ -125,6 +142,23 @@ class DistributedWindow {
   const Slab& slab() const { return slab_; }
 
  private:
+  // The semi-discrete acceleration of the whole grid, built at the first
+  // window's data; false when the density is not ½ φ_tᵀMφ_t − U
+  // (FieldAcceleration's check), and the start is then the straight path.
+  bool Accelerate(const double* x0, const double* v0) {
+    if (!accel_tried_) {
+      accel_tried_ = true;
+      try {
+        accel_.emplace(density_, slab_.grid(), std::span<const double>(x0, n_),
+                       std::span<const double>(v0, n_));
+        mass_ = accel_->inverse_mass().inverse();
+      } catch (const std::invalid_argument&) {
+        accel_.reset();
+      }
+    }
+    return accel_.has_value();
+  }
+
   static double Since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   }
@@ -143,6 +177,10 @@ class DistributedWindow {
   int n_;
   double rho_;
   SlabModesSolver<Density> solver_;
+  std::optional<spacetime::FieldAcceleration<Density>> accel_;
+  bool accel_tried_ = false;
+  Eigen::Matrix<double, m, m> mass_;
+  std::vector<double> acc_;
   spacetime::detail::WindowOperator time_;
   std::unique_ptr<System> system_;  // of the last solve (refers to time_)
   std::vector<double> y_, last_phi_, local_, all_;
@@ -152,7 +190,8 @@ class DistributedWindow {
   std::pair<double, double> last_estimates_{0, 0};
   std::string unchecked_ =
       "the windows of a distributed march are not checked against an "
-      "independent integration (its predictor runs on one process)";
+      "independent integration (its predictor runs on one process; Newton "
+      "starts from the Taylor path)";
   spacetime::FieldTimings timings_;
 };
 

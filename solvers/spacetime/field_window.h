@@ -90,11 +90,7 @@ class FieldWindow {
     } else {
       // No independent integration: the Newton start φ₀ + τπ₀, and no
       // bound (the checks then pass; FieldSolution says so).
-      for (int i = 0; i < points; ++i)
-        for (int k = 0; k < n_; ++k) {
-          px[std::size_t(i) * n_ + k] = x0[k] + tau[i] * v0[k];
-          pv[std::size_t(i) * n_ + k] = v0[k];
-        }
+      detail::TaylorStart(x0, v0, nullptr, tau, points, n_, px, pv);
       r.error_x = r.error_v = std::numeric_limits<double>::infinity();
     }
     timings_.predictor += Since(start);

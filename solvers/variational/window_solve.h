@@ -84,7 +84,8 @@ class WindowSolver {
                            predictor_tol.absolute, predictor_tol.relative,
                            px_.data(), pv_.data());
       a.predictor_steps += pr.steps;
-      if (!pr.ok || !uniform || tries == 3) break;
+      // An unbounded start (no independent integration) cannot be tightened.
+      if (!pr.ok || !uniform || tries == 3 || std::isinf(pr.error_x)) break;
       double scale = 0;
       for (double v : px_) scale = std::max(scale, std::abs(v));
       if (pr.error_x <= options_.max_relative_deviation * scale) break;
