@@ -125,28 +125,8 @@ ProfileFormulas Kink(const ProfileValues& p, const TermSet& terms) {
 
 ProfileFormulas PlaneWave(const ProfileValues& p, const TermSet& terms) {
   const FieldScene& s = p.s;
-  const double c = terms.Value("gradient", "c", 0.0);
-  const double mass = terms.Value("mass", "m", 0.0), a = p["amplitude"];
-  // ∂V/∂φ_a = w(|φ|²)·φ_a with w = m² + λ_q|φ|² + λ_4(|φ|² − v²).
-  double omega2 = c * c * p["k"] * p["k"] + mass * mass;
-  bool exact = terms.Within({"kinetic", "gradient", "mass"});
-  if (s.components == 2) {
-    const double lq = terms.Value("quartic", "lambda", 0.0);
-    const double l4 = terms.Value("phi4", "lambda", 0.0);
-    const double v = terms.Value("phi4", "v", 0.0);
-    omega2 += lq * a * a + l4 * (a * a - v * v);
-    exact = terms.Within({"kinetic", "gradient", "mass", "quartic", "phi4"});
-  }
-  if (!std::isfinite(omega2))
-    p.Fail("amplitude", "the plane wave's ω² overflows for these values",
-           "an amplitude and k for which c²k² + m² + λ_q A² + λ_4(A² − v²) "
-           "is a finite number");
-  if (!(omega2 >= 0))
-    p.Fail("amplitude",
-           "the plane wave's ω² = " + FormatNumber(omega2) +
-               " is negative for these terms",
-           "an amplitude with ω² = c²k² + m² + λ_q A² + λ_4(A² − v²) >= 0");
-  const fields::PlaneWave plane{a, p["k"], std::sqrt(omega2), s.components};
+  const auto [omega, exact] = PlaneWaveOmega(p, terms, p["k"] * p["k"]);
+  const fields::PlaneWave plane{p["amplitude"], p["k"], omega, s.components};
   const Formula wave = [plane](double t, const double* x, double* phi,
                                double* phi_t) { plane(t, x[0], phi, phi_t); };
   ProfileFormulas f{wave, {}, ""};
@@ -162,6 +142,28 @@ ProfileFormulas PlaneWave(const ProfileValues& p, const TermSet& terms) {
 }
 
 }  // namespace
+
+PlaneWaveFrequency PlaneWaveOmega(const ProfileValues& p, const TermSet& terms,
+                                  double k2) {
+  const double c = terms.Value("gradient", "c", 0.0);
+  const double mass = terms.Value("mass", "m", 0.0), a = p["amplitude"];
+  double omega2 = c * c * k2 + mass * mass;
+  bool exact = terms.Within({"kinetic", "gradient", "mass"});
+  if (p.s.components == 2) {
+    const double lq = terms.Value("quartic", "lambda", 0.0);
+    const double l4 = terms.Value("phi4", "lambda", 0.0);
+    const double v = terms.Value("phi4", "v", 0.0);
+    omega2 += lq * a * a + l4 * (a * a - v * v);
+    exact = terms.Within({"kinetic", "gradient", "mass", "quartic", "phi4"});
+  }
+  if (!(omega2 >= 0) || !std::isfinite(omega2))
+    p.Fail("amplitude",
+           "the plane wave's ω² = " + FormatNumber(omega2) +
+               " is not a finite number >= 0 for these terms",
+           "an amplitude and k with ω² = c²|k|² + m² + λ_q A² + λ_4(A² − v²) "
+           ">= 0");
+  return {std::sqrt(omega2), exact};
+}
 
 ProfileFormulas MakeProfile(const TomlReader& r, const toml::table& initial,
                             const FieldScene& s) {

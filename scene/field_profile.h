@@ -65,6 +65,19 @@ struct ProfileFormulas {
   std::string no_exact;  // why not, for the 'error' diagnostic's refusal
 };
 
+// The frequency of the plane wave φ = A cos(k·x − ωt) (and φ₁ = A sin(…)
+// for two components) under the scene's terms, |k|² given: ω² = c²|k|² +
+// w(A²) with ∂V/∂φ_a = w(|φ|²)·φ_a, w = m² + λ_q|φ|² + λ_4(|φ|² − v²) (the
+// quartic terms only for two components, where |φ| = A is constant), and
+// whether the wave is then an exact solution of the terms. Refuses an ω²
+// that is not a finite number ≥ 0.
+struct PlaneWaveFrequency {
+  double omega;
+  bool exact;
+};
+PlaneWaveFrequency PlaneWaveOmega(const ProfileValues& p, const TermSet& terms,
+                                  double k2);
+
 // The named profile of s.initial (not csv) for the scene's terms; `initial`
 // is the [initial] table, whose values a refusal points at.
 ProfileFormulas MakeProfile(const TomlReader& r, const toml::table& initial,

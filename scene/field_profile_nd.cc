@@ -97,25 +97,9 @@ ProfileFormulas PlaneWaveNd(const ProfileValues& p, const TermSet& terms) {
   const std::vector<double> k = s.initial.vectors.at("k");
   double k2 = 0;
   for (double ka : k) k2 += ka * ka;
-  const double c = terms.Value("gradient", "c", 0.0);
-  const double mass = terms.Value("mass", "m", 0.0), a = p["amplitude"];
-  double omega2 = c * c * k2 + mass * mass;
-  bool exact = terms.Within({"kinetic", "gradient", "mass"});
-  if (s.components == 2) {
-    const double lq = terms.Value("quartic", "lambda", 0.0);
-    const double l4 = terms.Value("phi4", "lambda", 0.0);
-    const double v = terms.Value("phi4", "v", 0.0);
-    omega2 += lq * a * a + l4 * (a * a - v * v);
-    exact = terms.Within({"kinetic", "gradient", "mass", "quartic", "phi4"});
-  }
-  if (!(omega2 >= 0) || !std::isfinite(omega2))
-    p.Fail("amplitude",
-           "the plane wave's ω² = " + FormatNumber(omega2) +
-               " is not a finite number >= 0 for these terms",
-           "an amplitude and k with ω² = c²|k|² + m² + λ_q A² + λ_4(A² − v²) "
-           ">= 0");
+  const auto [omega, exact] = PlaneWaveOmega(p, terms, k2);
   // PlaneWave takes the phase k·x as its x with k = 1.
-  const fields::PlaneWave plane{a, 1.0, std::sqrt(omega2), s.components};
+  const fields::PlaneWave plane{p["amplitude"], 1.0, omega, s.components};
   const Formula wave = [plane, k](double t, const double* x, double* phi,
                                   double* phi_t) {
     double phase = 0;
