@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/action/local_map.h"
+#include "core/autodiff/pointwise.h"
 #include "core/sbp/regularized.h"
 #include "core/sbp/space_grid.h"
 
@@ -25,6 +26,34 @@ constexpr int SpaceDimOf() {
     return Density::kSpaceDim;
   else
     return 1;
+}
+
+// Whether test(h) holds for the value, gradient and Hessian h of call (a
+// density of K arguments) at four generic points: a density that depends
+// on an argument, or couples two, does so at almost every point.
+template <class Real, int K, class F, class Test>
+bool AtGenericPoints(const F& call, Test&& test) {
+  for (int s = 0; s < 4; ++s) {
+    Real z[K];
+    for (int k = 0; k < K; ++k)
+      z[k] = Real(0.3) + Real(0.17) * Real(s) + Real(0.11) * Real(k * k % 7);
+    if (!test(autodiff::Hessian<Real, K>(call, z))) return false;
+  }
+  return true;
+}
+
+// The components whose time derivative the density does not take, as a bit
+// per component in `static constexpr unsigned kWithoutTimeDerivative` (0,
+// none, without it): the scalar potential A₀ of a gauge field, whose
+// equation is a constraint (Gauss's law) at every node. Such a component
+// has no initial data and no end connection in the doubled action
+// (docs/gauge.md §2).
+template <class Density>
+constexpr unsigned ConstraintMaskOf() {
+  if constexpr (requires { Density::kWithoutTimeDerivative; })
+    return Density::kWithoutTimeDerivative;
+  else
+    return 0u;
 }
 
 // φ, φ_t and the gradient on the grid, time-major: φ and φ_t at

@@ -84,6 +84,15 @@ class FieldSystem {
     SetInitial(std::move(phi0), std::move(pi0));
     // ∂²L/∂φ_t∂(∇φ)
     couples_t_x_ = !HessianBlockVanishes<m, d * m>(m, 2 * m);
+    for (int a = 0; a < m; ++a)
+      if (Constraint(a) &&
+          !AtGenericPoints<Real, K>(Call(), [a](const auto& h) {
+            return h.gradient[m + a] == Real(0) &&
+                   h.hessian.row(m + a).cwiseAbs().maxCoeff() == Real(0);
+          }))
+        throw std::invalid_argument("the density depends on φ_t of component " +
+                                    std::to_string(a) +
+                                    ", declared in kWithoutTimeDerivative");
   }
   FieldSystem(const Density& density, const sbp::RegularizedOperator<Real>& dt,
               const sbp::SpaceDerivative<Real>& dx, std::vector<Real> phi0,
@@ -91,6 +100,11 @@ class FieldSystem {
       : FieldSystem(density, dt, sbp::SpaceGrid<Real>(dx), std::move(phi0),
                     std::move(pi0)) {}
 
+  // Component a is not differentiated in time (field_point.h): its λ3 and
+  // λ4 rows read λ3 = λ4 = 0, no initial data (docs/gauge.md §2).
+  static constexpr bool Constraint(int a) {
+    return (ConstraintMaskOf<Density>() >> a) & 1u;
+  }
   int time_points() const { return nt_; }
   int space_points() const { return nx_; }
   int block() const { return (nt_ + 2) * m; }
@@ -204,19 +218,13 @@ class FieldSystem {
     return [this](const auto* z) { return density_(z, z + m, z + 2 * m); };
   }
   // Whether the R × C block of the density's Hessian at (row, col) of z is
-  // zero at a few generic points (a density that couples two arguments does
-  // so at almost every point).
+  // zero (at AtGenericPoints').
   template <int R, int C>
   bool HessianBlockVanishes(int row, int col) const {
-    for (int s = 0; s < 4; ++s) {
-      Real z[K];
-      for (int k = 0; k < K; ++k)
-        z[k] = Real(0.3) + Real(0.17) * Real(s) + Real(0.11) * Real(k * k % 7);
-      const Hessian h = autodiff::Hessian<Real, K>(Call(), z).hessian;
-      if (h.template block<R, C>(row, col).cwiseAbs().maxCoeff() != Real(0))
-        return false;
-    }
-    return true;
+    return AtGenericPoints<Real, K>(Call(), [&](const auto& h) {
+      return h.hessian.template block<R, C>(row, col).cwiseAbs().maxCoeff() ==
+             Real(0);
+    });
   }
 
   // The density's derivatives ∂L/∂(φ, φ_t, φ_x) at grid point (i, j).
@@ -271,6 +279,11 @@ class FieldSystem {
         for (std::size_t k = 0; k < last.coeffs.size(); ++k)
           f[Phi(last.first + static_cast<int>(k), j, a)] +=
               hx * y[Lambda4(j, a)] * last.coeffs[k] * D.inv_dt();
+        if (Constraint(a)) {
+          f[InitialValueRow(j, a)] = y[Lambda3(j, a)];
+          f[InitialVelocityRow(j, a)] = y[Lambda4(j, a)];
+          continue;
+        }
         f[InitialValueRow(j, a)] = y[Phi(0, j, a)] - phi0_[j * m + a];
         for (int i = 0; i < nt_; ++i) col[i] = y[Phi(i, j, a)];
         f[InitialVelocityRow(j, a)] =
@@ -340,6 +353,11 @@ class FieldSystem {
             sink.Add(Phi(last.first + static_cast<int>(k), j, a), Lambda4(j, a),
                      hx * (last.coeffs[k] * D.inv_dt()));
         if (Fixed(j)) continue;  // rows replaced by the boundary's
+        if (Constraint(a)) {
+          sink.Add(InitialValueRow(j, a), Lambda3(j, a), Real(1));
+          sink.Add(InitialVelocityRow(j, a), Lambda4(j, a), Real(1));
+          continue;
+        }
         sink.Add(InitialValueRow(j, a), Phi(0, j, a), Real(1));
         for (std::size_t k = 0; k < first.coeffs.size(); ++k)
           if (first.coeffs[k] != Real(0))
