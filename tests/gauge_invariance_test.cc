@@ -32,7 +32,7 @@
 #include "core/sbp/regularized.h"
 #include "core/sbp/space_grid.h"
 #include "problems/fields/gauge.h"
-#include "solvers/spacetime/assembly.h"
+#include "tests/gauge_helpers.h"
 
 using vivp::sbp::SpaceDerivative;
 using Grid = vivp::sbp::SpaceGrid<double>;
@@ -195,9 +195,7 @@ NullSpace<d> Measure(const std::string& op, const Grid& g, int nt) {
                                          std::vector<double>(n * m, 0.1),
                                          std::vector<double>(n * m, 0.2));
   std::vector<double> y(sys.size(), 0.3);
-  vivp::spacetime::PatternedMatrix jac;
-  jac.Assemble(sys.size(), [&](auto& sink) { sys.Jacobian(y.data(), sink); });
-  const Eigen::MatrixXd J(jac.matrix());
+  const Eigen::MatrixXd J = gauge_test::DenseJacobian(sys, y);
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
   const auto& s = svd.singularValues();
   NullSpace<d> r;

@@ -25,9 +25,9 @@
 #include "core/sbp/space_grid.h"
 #include "problems/fields/densities.h"
 #include "problems/fields/gauge.h"
-#include "solvers/spacetime/assembly.h"
 #include "solvers/spacetime/fourier_solver.h"
 #include "solvers/variational/newton.h"
+#include "tests/gauge_helpers.h"
 
 using vivp::sbp::SpaceDerivative;
 using Grid = vivp::sbp::SpaceGrid<double>;
@@ -48,9 +48,7 @@ void CompareWithDense(const std::string& op, const Grid& g, int nt,
                                          std::vector<double>(n * m, 0.0),
                                          std::vector<double>(n * m, 0.0));
   std::vector<double> y(sys.size(), 0.0);
-  vivp::spacetime::PatternedMatrix jac;
-  jac.Assemble(sys.size(), [&](auto& sink) { sys.Jacobian(y.data(), sink); });
-  const Eigen::MatrixXd J(jac.matrix());
+  const Eigen::MatrixXd J = gauge_test::DenseJacobian(sys, y);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::VectorXd x(sys.size());

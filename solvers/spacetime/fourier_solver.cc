@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace vivp::spacetime {
@@ -16,15 +17,18 @@ using Complex = std::complex<double>;
 
 struct FourierWindowSolver::Impl {
   int nt = 0, n = 0, m = 0, block = 0, nullity = 0;
+  int half = 0;  // wave vectors stored: axis 0 halved (real data)
   double dt = 0;
   std::vector<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXcd>> cod;
   std::vector<Eigen::VectorXd> scale;  // row equilibration per wave vector
-  fftw_complex* data = nullptr;
+  double* real = nullptr;
+  fftw_complex* hat = nullptr;
   fftw_plan forward = nullptr, backward = nullptr;
   ~Impl() {
     if (forward) fftw_destroy_plan(forward);
     if (backward) fftw_destroy_plan(backward);
-    if (data) fftw_free(data);
+    if (real) fftw_free(real);
+    if (hat) fftw_free(hat);
   }
 };
 
@@ -58,6 +62,61 @@ std::vector<Complex> Symbols(const sbp::SpaceDerivative<double>& axis) {
   return s;
 }
 
+// The window's node rows for one wave vector (docs/gauge.md §4). With the
+// density's arguments at node i written T_x φ̂ times a number c_x (T = I
+// and c = 1 for φ, T = D̄ and c = 1 for φ_t, T = I and c = s_b for ∂_bφ),
+//
+//   w Pᴴ (Hᵗ ⊗ h) P = w Σ_{x,y} (T_xᵀ Hᵗ T_y) ⊗ conj(c_x) c_y h_xy,
+//
+// four time matrices (Hᵗ, Hᵗ D̄, D̄ᵀHᵗ, D̄ᵀHᵗD̄) built once for the window,
+// each with an m × m coefficient per wave vector.
+struct NodeRows {
+  Eigen::MatrixXd h, hd, dhd;  // Hᵗ, Hᵗ D̄, D̄ᵀ Hᵗ D̄
+  NodeRows(const Eigen::MatrixXd& dbar, const sbp::Operator<double>& D) {
+    const int nt = int(dbar.rows());
+    h = Eigen::MatrixXd::Zero(nt, nt);
+    for (int i = 0; i < nt; ++i) h(i, i) = D.NormWeight(i);
+    hd = h * dbar;
+    dhd = dbar.transpose() * hd;
+  }
+  // J's node block += w Σ T ⊗ C for the wave vector with symbols s.
+  void Add(const Eigen::MatrixXd& hess, int m, const std::vector<Complex>& s,
+           double w, Eigen::MatrixXcd& J) const {
+    const int nt = int(h.rows()), d = int(s.size());
+    // The arguments without a time derivative: φ and each ∂_bφ.
+    std::vector<std::pair<int, Complex>> plain{{0, 1.0}};
+    for (int b = 0; b < d; ++b) plain.push_back({(2 + b) * m, s[b]});
+    Eigen::MatrixXcd cpp = Eigen::MatrixXcd::Zero(m, m), cpt = cpp, ctp = cpp;
+    const Eigen::MatrixXcd ctt = hess.block(m, m, m, m).cast<Complex>();
+    for (const auto& [x, cx] : plain) {
+      cpt += std::conj(cx) * hess.block(x, m, m, m).cast<Complex>();
+      ctp += cx * hess.block(m, x, m, m).cast<Complex>();
+      for (const auto& [y, cy] : plain)
+        cpp += std::conj(cx) * cy * hess.block(x, y, m, m).cast<Complex>();
+    }
+    for (int i = 0; i < nt; ++i)
+      for (int l = 0; l < nt; ++l)
+        J.block(i * m, l * m, m, m) += w * (h(i, l) * cpp + hd(i, l) * cpt +
+                                            hd(l, i) * ctp + dhd(i, l) * ctt);
+  }
+};
+
+// The symbols of wave vector `index` of the half spectrum (axis 0 holds
+// N_0/2 + 1 of them, the rest the complex conjugates of those).
+std::vector<Complex> SymbolsOf(const std::vector<std::vector<Complex>>& all,
+                               int index) {
+  const int d = int(all.size()), h0 = int(all[0].size()) / 2 + 1;
+  std::vector<Complex> s(d);
+  s[0] = all[0][index % h0];
+  int rest = index / h0;
+  for (int b = 1; b < d; ++b) {
+    const int nb = int(all[b].size());
+    s[b] = all[b][rest % nb];
+    rest /= nb;
+  }
+  return s;
+}
+
 }  // namespace
 
 FourierWindowSolver::FourierWindowSolver(
@@ -82,33 +141,22 @@ FourierWindowSolver::FourierWindowSolver(
   s.m = m;
   s.block = (s.nt + 2) * m;
   s.dt = D.dt();
+  s.half = s.n / grid.points(0) * (grid.points(0) / 2 + 1);
   const int nt = s.nt, M = s.block;
   const double w = grid.NormWeight(0);
   const Eigen::MatrixXd Dm = D.DenseD();
   Eigen::MatrixXd Dbar = Dm;
   Dbar(0, 0) += dt.penalty();
+  const NodeRows rows(Dbar, D);
   std::vector<std::vector<Complex>> symbols;
   for (int b = 0; b < d; ++b) symbols.push_back(Symbols(grid.axis(b)));
   auto constraint = [&](int a) { return (constraints >> a) & 1u; };
-  s.cod.resize(s.n);
-  s.scale.resize(s.n);
-  Eigen::MatrixXcd P(nt * K, nt * m), J(M, M);
-  for (int k = 0; k < s.n; ++k) {
-    // P: the density's arguments at each node from the mode's φ̂.
-    P.setZero();
-    for (int i = 0; i < nt; ++i)
-      for (int a = 0; a < m; ++a) {
-        P(i * K + a, i * m + a) = 1;
-        for (int l = 0; l < nt; ++l) P(i * K + m + a, l * m + a) = Dbar(i, l);
-        for (int b = 0; b < d; ++b)
-          P(i * K + (2 + b) * m + a, i * m + a) =
-              symbols[b][grid.Coordinate(k, b)];
-      }
-    Eigen::MatrixXcd WH = Eigen::MatrixXcd::Zero(nt * K, nt * K);
-    for (int i = 0; i < nt; ++i)
-      WH.block(i * K, i * K, K, K) = (w * D.NormWeight(i)) * h;
+  s.cod.resize(s.half);
+  s.scale.resize(s.half);
+  Eigen::MatrixXcd J(M, M);
+  for (int k = 0; k < s.half; ++k) {
     J.setZero();
-    J.topLeftCorner(nt * m, nt * m) = P.adjoint() * WH * P;
+    rows.Add(h, m, SymbolsOf(symbols, k), w, J);
     for (int a = 0; a < m; ++a) {
       const int l3 = nt * m + a, l4 = (nt + 1) * m + a;
       J((nt - 1) * m + a, l3) += w;
@@ -129,19 +177,23 @@ FourierWindowSolver::FourierWindowSolver(
     s.scale[k] = r;
     s.cod[k].setThreshold(rank_threshold);
     s.cod[k].compute(r.asDiagonal() * J);
-    s.nullity += M - int(s.cod[k].rank());
+    // The wave vectors not stored are the conjugates of stored ones, with
+    // conjugate systems of the same rank.
+    const int q0 = k % (grid.points(0) / 2 + 1);
+    const bool self = q0 == 0 || 2 * q0 == grid.points(0);
+    s.nullity += (self ? 1 : 2) * (M - int(s.cod[k].rank()));
   }
-  // One transform per position of a point's block, over the grid (FFTW's
-  // first dimension varies slowest: the grid's last axis).
+  // One real-to-complex transform per position of a point's block, over
+  // the grid (FFTW's first dimension varies slowest: the grid's last axis,
+  // and its last one, axis 0, is the one halved).
   std::vector<int> dims(d);
   for (int b = 0; b < d; ++b) dims[b] = grid.points(d - 1 - b);
-  s.data = fftw_alloc_complex(std::size_t(s.n) * M);
-  s.forward =
-      fftw_plan_many_dft(d, dims.data(), M, s.data, nullptr, M, 1, s.data,
-                         nullptr, M, 1, FFTW_FORWARD, FFTW_ESTIMATE);
-  s.backward =
-      fftw_plan_many_dft(d, dims.data(), M, s.data, nullptr, M, 1, s.data,
-                         nullptr, M, 1, FFTW_BACKWARD, FFTW_ESTIMATE);
+  s.real = fftw_alloc_real(std::size_t(s.n) * M);
+  s.hat = fftw_alloc_complex(std::size_t(s.half) * M);
+  s.forward = fftw_plan_many_dft_r2c(d, dims.data(), M, s.real, nullptr, M, 1,
+                                     s.hat, nullptr, M, 1, FFTW_ESTIMATE);
+  s.backward = fftw_plan_many_dft_c2r(d, dims.data(), M, s.hat, nullptr, M, 1,
+                                      s.real, nullptr, M, 1, FFTW_ESTIMATE);
 }
 
 FourierWindowSolver::~FourierWindowSolver() = default;
@@ -150,14 +202,11 @@ void FourierWindowSolver::Solve(double* b) const {
   const Impl& s = *impl_;
   const int M = s.block;
   const std::size_t total = std::size_t(s.n) * M;
-  for (std::size_t k = 0; k < total; ++k) {
-    s.data[k][0] = b[k];
-    s.data[k][1] = 0;
-  }
+  std::copy(b, b + total, s.real);
   fftw_execute(s.forward);
   Eigen::VectorXcd rhs(M);
-  for (int k = 0; k < s.n; ++k) {
-    fftw_complex* at = s.data + std::size_t(k) * M;
+  for (int k = 0; k < s.half; ++k) {
+    fftw_complex* at = s.hat + std::size_t(k) * M;
     for (int r = 0; r < M; ++r)
       rhs[r] = s.scale[k][r] * Complex(at[r][0], at[r][1]);
     const Eigen::VectorXcd z = s.cod[k].solve(rhs);
@@ -167,7 +216,7 @@ void FourierWindowSolver::Solve(double* b) const {
     }
   }
   fftw_execute(s.backward);
-  for (std::size_t k = 0; k < total; ++k) b[k] = s.data[k][0] / s.n;
+  for (std::size_t k = 0; k < total; ++k) b[k] = s.real[k] / s.n;
 }
 
 int FourierWindowSolver::nullity() const { return impl_->nullity; }

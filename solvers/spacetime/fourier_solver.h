@@ -26,9 +26,15 @@
 // minimum-norm one. That choice of gauge is the solve's; nothing in the
 // equations fixes one.
 //
-// Cost: each system is dense (W + 2)m square, factored once per window
-// operator: O(N (Wm)³) to factor, O(N (Wm)² + N log N · Wm) per solve, and
-// N (Wm)² complex numbers held. Linear in the points, not in the window.
+// The data are real, so the systems of k and −k are complex conjugates
+// (the stencils are real): only the half spectrum of a real-to-complex
+// transform is factored and solved.
+//
+// Cost: each system is dense (W + 2)m square, built from four W × W time
+// matrices and factored once per window operator: O(N (Wm)³ / 2) to
+// factor, O(N (Wm)² / 2 + N log N · Wm) per solve, and N (Wm)² / 2 complex
+// numbers held. Linear in the points, cubic in the window: a solve for
+// windows, not for a global one.
 #pragma once
 
 #include <Eigen/Core>
