@@ -1,11 +1,20 @@
 // What the gauge-field tests share: a window's Jacobian as a dense matrix
-// (tests on a few hundred unknowns; the solves never form it).
+// (tests on a few hundred unknowns; the solves never form it), and for
+// electromagnetism in 2 + 1 D on a periodic grid the exact semi-discrete
+// plane wave, the fields E and B of a march's slices, and random gauges.
 #pragma once
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <span>
 #include <vector>
 
+#include "core/action/field_charges.h"
+#include "problems/fields/gauge.h"
 #include "solvers/spacetime/assembly.h"
+#include "solvers/spacetime/solve.h"
 
 namespace gauge_test {
 
@@ -14,6 +23,187 @@ Eigen::MatrixXd DenseJacobian(const System& sys, const std::vector<double>& y) {
   vivp::spacetime::PatternedMatrix jac;
   jac.Assemble(sys.size(), [&](auto& sink) { sys.Jacobian(y.data(), sink); });
   return Eigen::MatrixXd(jac.matrix());
+}
+
+using Grid = vivp::sbp::SpaceGrid<double>;
+
+// A slice of (A₀, A₁, A₂) and its time derivative, value j·3 + a.
+struct Slices {
+  std::vector<double> phi, phi_t;
+};
+
+// E_b = −D_bA₀ − ∂_tA_b and B = D_0A₁ − D_1A₀ of one slice.
+struct Fields {
+  std::vector<double> e, b;
+};
+inline Fields FieldsOf(const Grid& g, std::span<const double> phi,
+                       std::span<const double> phi_t) {
+  const int n = g.points();
+  std::vector<double> grad(std::size_t(n) * 6);
+  Grid::GradientWork<double> w;
+  g.Gradient<double>(3, phi, grad, w);
+  auto d = [&](int j, int b, int a) { return grad[(j * 2 + b) * 3 + a]; };
+  Fields f{std::vector<double>(std::size_t(n) * 2), std::vector<double>(n)};
+  for (int j = 0; j < n; ++j) {
+    for (int b = 0; b < 2; ++b)
+      f.e[j * 2 + b] = -d(j, b, 0) - phi_t[j * 3 + 1 + b];
+    f.b[j] = d(j, 0, 2) - d(j, 1, 1);
+  }
+  return f;
+}
+
+// A = ε sin(k·x − ωt), A₀ = 0, exact for the spatially discrete equations:
+// D_b sin(k_b x + c) = σ_b cos(k_b x + c) for the central stencils, so
+// ω = |σ| and ε ⊥ σ. The errors of E and B at t are relative to their
+// amplitudes.
+class PlaneWave {
+ public:
+  PlaneWave(const Grid& g, int kx, int ky) : g_(g), k_{double(kx), double(ky)} {
+    for (int b = 0; b < 2; ++b) {
+      const auto& axis = g.axis(b);
+      std::vector<double> u(axis.points()), du(axis.points());
+      for (int j = 0; j < axis.points(); ++j)
+        u[j] = std::sin(k_[b] * axis.x(j));
+      axis.Apply<double>(u, du);
+      sigma_[b] = du[0];
+    }
+    omega_ = std::hypot(sigma_[0], sigma_[1]);
+    eps_[0] = -sigma_[1] / omega_;
+    eps_[1] = sigma_[0] / omega_;
+  }
+  Slices At(double t) const {
+    const int n = g_.points();
+    Slices s{std::vector<double>(std::size_t(n) * 3, 0.0),
+             std::vector<double>(std::size_t(n) * 3, 0.0)};
+    for (int j = 0; j < n; ++j)
+      for (int b = 0; b < 2; ++b) {
+        s.phi[j * 3 + 1 + b] = eps_[b] * std::sin(Phase(j, t));
+        s.phi_t[j * 3 + 1 + b] = -omega_ * eps_[b] * std::cos(Phase(j, t));
+      }
+    return s;
+  }
+  struct Error {
+    double e = 0, b = 0;
+  };
+  Error Errors(std::span<const double> phi, std::span<const double> phi_t,
+               double t) const {
+    const Fields f = FieldsOf(g_, phi, phi_t);
+    const double bamp = sigma_[0] * eps_[1] - sigma_[1] * eps_[0];
+    Error r;
+    for (int j = 0; j < g_.points(); ++j) {
+      const double c = std::cos(Phase(j, t));
+      for (int b = 0; b < 2; ++b)
+        r.e = std::max(r.e, std::abs(f.e[j * 2 + b] - omega_ * eps_[b] * c));
+      r.b = std::max(r.b, std::abs(f.b[j] - bamp * c));
+    }
+    r.e /= omega_;
+    r.b /= std::abs(bamp);
+    return r;
+  }
+
+ private:
+  double Phase(int j, double t) const {
+    return k_[0] * g_.x(j, 0) + k_[1] * g_.x(j, 1) - omega_ * t;
+  }
+  const Grid& g_;
+  double k_[2], sigma_[2], eps_[2], omega_;
+};
+
+// How far the march's gauge moved: max |A₀| and max |D·A| over the slices
+// (both 0 for the transverse wave's data).
+struct Gauge {
+  double a0 = 0, longitudinal = 0;
+};
+inline Gauge GaugeParts(const Grid& g,
+                        const vivp::spacetime::FieldSolution& s) {
+  const int n = g.points();
+  std::vector<double> grad(std::size_t(n) * 6);
+  Grid::GradientWork<double> w;
+  Gauge r;
+  for (std::size_t k = 0; k < s.t.size(); ++k) {
+    const std::span<const double> phi(&s.phi[k * n * 3], std::size_t(n) * 3);
+    g.Gradient<double>(3, phi, grad, w);
+    for (int j = 0; j < n; ++j) {
+      r.a0 = std::max(r.a0, std::abs(phi[j * 3]));
+      r.longitudinal =
+          std::max(r.longitudinal,
+                   std::abs(grad[(j * 2) * 3 + 1] + grad[(j * 2 + 1) * 3 + 2]));
+    }
+  }
+  return r;
+}
+
+// E, B and the energy at every kept slice.
+struct Observed {
+  std::vector<Fields> fields;
+  std::vector<double> energy;
+};
+inline Observed Observables(const Grid& g,
+                            const vivp::spacetime::FieldSolution& s) {
+  const std::size_t n = std::size_t(g.points()) * 3;
+  Observed o;
+  for (std::size_t k = 0; k < s.t.size(); ++k) {
+    const std::span<const double> phi(&s.phi[k * n], n),
+        phi_t(&s.phi_t[k * n], n);
+    o.fields.push_back(FieldsOf(g, phi, phi_t));
+    o.energy.push_back(vivp::action::ChargesOfSlice(
+                           vivp::fields::MaxwellIn<2>{}, g, phi, phi_t)
+                           .energy);
+  }
+  return o;
+}
+
+// The largest difference of E, B or the energy, each relative to its
+// largest value.
+inline double Difference(const Observed& a, const Observed& b) {
+  if (a.fields.size() != b.fields.size()) return INFINITY;
+  double e = 0, emax = 0, f = 0, fmax = 0, w = 0, wmax = 0;
+  for (std::size_t k = 0; k < a.fields.size(); ++k) {
+    for (std::size_t i = 0; i < a.fields[k].e.size(); ++i) {
+      e = std::max(e, std::abs(a.fields[k].e[i] - b.fields[k].e[i]));
+      emax = std::max(emax, std::abs(a.fields[k].e[i]));
+    }
+    for (std::size_t i = 0; i < a.fields[k].b.size(); ++i) {
+      f = std::max(f, std::abs(a.fields[k].b[i] - b.fields[k].b[i]));
+      fmax = std::max(fmax, std::abs(a.fields[k].b[i]));
+    }
+    w = std::max(w, std::abs(a.energy[k] - b.energy[k]));
+    wmax = std::max(wmax, std::abs(a.energy[k]));
+  }
+  return std::max({e / emax, f / fmax, w / wmax});
+}
+
+// The data in another gauge: A_b + D_bχ, ∂_tA_b + D_bχ̇, A₀ − χ̇, with χ
+// and χ̇ smooth (random Fourier modes up to |q| = 3, amplitude about 1),
+// and an arbitrary start for A₀'s velocity, which is no datum.
+inline Slices RandomGauge(const Grid& g, const Slices& data,
+                          std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int n = g.points();
+  auto smooth = [&] {
+    std::vector<double> chi(n, 0.0);
+    for (int q0 = 0; q0 <= 3; ++q0)
+      for (int q1 = 0; q1 <= 3; ++q1) {
+        const double a = 0.3 * u(rng), p = 3 * u(rng);
+        for (int j = 0; j < n; ++j)
+          chi[j] += a * std::sin(q0 * g.x(j, 0) + q1 * g.x(j, 1) + p);
+      }
+    return chi;
+  };
+  const auto chi = smooth(), chi_t = smooth(), a0_t = smooth();
+  Slices s = data;
+  std::vector<double> d(n);
+  for (int b = 0; b < 2; ++b) {
+    g.Apply<double>(b, chi, d);
+    for (int j = 0; j < n; ++j) s.phi[j * 3 + 1 + b] += d[j];
+    g.Apply<double>(b, chi_t, d);
+    for (int j = 0; j < n; ++j) s.phi_t[j * 3 + 1 + b] += d[j];
+  }
+  for (int j = 0; j < n; ++j) {
+    s.phi[j * 3] -= chi_t[j];
+    s.phi_t[j * 3] += a0_t[j];
+  }
+  return s;
 }
 
 }  // namespace gauge_test

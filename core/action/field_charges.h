@@ -46,11 +46,7 @@ FieldCharges ChargesOfSlice(const Density& density,
   FieldCharges q;
   for (int j = 0; j < n; ++j) {
     double z[K];
-    for (int a = 0; a < m; ++a) {
-      z[a] = phi[j * m + a];
-      z[m + a] = phi_t[j * m + a];
-    }
-    for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x[j * d * m + k];
+    SliceArguments<m, d>(j, phi.data(), phi_t.data(), phi_x.data(), z);
     const auto [value, g] = autodiff::Gradient<double, K>(
         [&](const auto* w) { return density(w, w + m, w + 2 * m); }, z);
     double e = -value, p[d] = {};

@@ -42,6 +42,19 @@ bool AtGenericPoints(const F& call, Test&& test) {
   return true;
 }
 
+// The density's arguments at point j of a slice, (φ, φ_t, ∇φ) as one
+// vector z of (2 + d)m: phi and phi_t at j·m + a, ∇φ at (j·d + b)·m + a
+// (SpaceGrid::Gradient's layout). A null phi_t gives φ_t = 0.
+template <int m, int d>
+void SliceArguments(int j, const double* phi, const double* phi_t,
+                    const double* phi_x, double* z) {
+  for (int a = 0; a < m; ++a) {
+    z[a] = phi[j * m + a];
+    z[m + a] = phi_t ? phi_t[j * m + a] : 0.0;
+  }
+  for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x[j * d * m + k];
+}
+
 // The components whose time derivative the density does not take, as a bit
 // per component in `static constexpr unsigned kWithoutTimeDerivative` (0,
 // none, without it): the scalar potential A₀ of a gauge field, whose

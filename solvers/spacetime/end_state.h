@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <vector>
 
 #include "core/action/field_system.h"
@@ -26,18 +27,28 @@ struct FieldEnd {
 namespace detail {
 
 // The density at one spatial point with ∇φ held fixed, as a point-mechanics
-// Lagrangian in (φ, φ_t).
+// Lagrangian in (φ, φ_t) of the components with a time derivative; those
+// without one (A₀ of a gauge field, docs/gauge.md §2) carry no momentum and
+// no end multipliers, so they are held at their last node's value.
 template <class Density>
 struct PointLagrangian {
-  static constexpr int kDim = Density::kDim;
-  static constexpr int kGrad = action::SpaceDimOf<Density>() * kDim;
+  static constexpr int m = Density::kDim;
+  static constexpr unsigned kConstraints = action::ConstraintMaskOf<Density>();
+  static constexpr int kDim = m - std::popcount(kConstraints);
+  static constexpr int kGrad = action::SpaceDimOf<Density>() * m;
+  static constexpr bool Dynamic(int a) { return !((kConstraints >> a) & 1u); }
   const Density* density;
   double phi_x[kGrad];  // ∇φ, as the density receives it
+  double held[m];       // the constraint components' values
   template <class T>
   T operator()(const T* x, const T* v) const {
-    T px[kGrad];
+    T px[kGrad], fx[m], fv[m];
     for (int a = 0; a < kGrad; ++a) px[a] = T(phi_x[a]);
-    return (*density)(x, v, px);
+    for (int a = 0, k = 0; a < m; ++a) {
+      fx[a] = Dynamic(a) ? x[k] : T(held[a]);
+      fv[a] = Dynamic(a) ? v[k++] : T(0);
+    }
+    return (*density)(fx, fv, px);
   }
 };
 
@@ -67,22 +78,30 @@ FieldEnd CorrectFieldEnd(const action::FieldSystem<Density>& system,
       }
       continue;
     }
-    detail::PointLagrangian<Density> lagrangian{&system.density(), {}};
-    double lambda3[m], lambda4[m];
+    using Point = detail::PointLagrangian<Density>;
+    constexpr int md = Point::kDim;
+    Point lagrangian{&system.density(), {}, {}};
+    double lambda3[md], lambda4[md], xn[md], vn[md];
     for (int b = 0; b < action::SpaceDimOf<Density>(); ++b)
       for (int a = 0; a < m; ++a)
         lagrangian.phi_x[b * m + a] = v.phi_x[system.Grad(last, j, b, a)];
-    for (int a = 0; a < m; ++a) {
-      lambda3[a] = y[system.Lambda3(j, a)];
-      lambda4[a] = y[system.Lambda4(j, a)];
+    for (int a = 0, c = 0; a < m; ++a) {
+      const int at = system.At(last, j, a);
+      e.phi[k + a] = lagrangian.held[a] = v.phi[at];
+      e.phi_t[k + a] = v.phi_t[at];
+      if (!Point::Dynamic(a)) continue;
+      lambda3[c] = y[system.Lambda3(j, a)];
+      lambda4[c] = y[system.Lambda4(j, a)];
+      xn[c] = v.phi[at];
+      vn[c++] = v.phi_t[at];
     }
-    const auto c = variational::CorrectEnd<double>(
-        lagrangian, 2, &v.phi[system.At(last, j, 0)],
-        &v.phi_t[system.At(last, j, 0)], lambda3, lambda4);
-    for (int a = 0; a < m; ++a) {
-      e.phi[k + a] = c.position[a];
-      e.phi_t[k + a] = c.velocity[a];
-    }
+    const auto c = variational::CorrectEnd<double>(lagrangian, 2, xn, vn,
+                                                   lambda3, lambda4);
+    for (int a = 0, q = 0; a < m; ++a)
+      if (Point::Dynamic(a)) {
+        e.phi[k + a] = c.position[q];
+        e.phi_t[k + a] = c.velocity[q++];
+      }
     e.phi_estimate = std::max(e.phi_estimate, c.position_error_estimate);
     e.phi_t_estimate = std::max(e.phi_t_estimate, c.velocity_error_estimate);
   }

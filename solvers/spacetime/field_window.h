@@ -24,6 +24,7 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
 #include "solvers/spacetime/end_state.h"
+#include "solvers/spacetime/fourier_solver.h"
 #include "solvers/spacetime/predictor.h"
 #include "solvers/spacetime/resolution.h"
 #include "solvers/spacetime/window_data.h"
@@ -36,10 +37,44 @@
 
 namespace vivp::spacetime {
 
+// Whether the window's linear solver suits the field: the Fourier window
+// solve needs a periodic grid (and so no boundary data), and a field with
+// a component without a time derivative needs it, its Jacobian being
+// singular along the gauge. Else std::invalid_argument, naming the fix.
+template <class Density>
+void CheckLinearSolver(const sbp::SpaceGrid<double>& grid,
+                       WindowLinearSolver linear,
+                       const FieldBoundary& boundary) {
+  if (linear != WindowLinearSolver::kFourier) {
+    if (action::ConstraintMaskOf<Density>() != 0u)
+      throw std::invalid_argument(
+          "a field with a component without a time derivative (a gauge "
+          "field's A₀) has a window Jacobian singular along the gauge: solve "
+          "it with the Fourier window solve");
+    return;
+  }
+  for (int b = 0; b < grid.dim(); ++b)
+    if (!grid.axis(b).periodic())
+      throw std::invalid_argument(
+          "the Fourier window solve needs a periodic grid; axis " +
+          std::to_string(b) + " is an interval" +
+          (action::ConstraintMaskOf<Density>() != 0u
+               ? std::string(", and gauge fields are built on periodic grids "
+                             "only (make every axis periodic)")
+               : std::string(" (use the sparse LU or the mode solve "
+                             "there)")));
+  if (boundary.left.kind != action::BoundaryKind::kNatural ||
+      boundary.right.kind != action::BoundaryKind::kNatural ||
+      !boundary.faces.empty())
+    throw std::invalid_argument(
+        "the Fourier window solve has no boundary data on a periodic grid");
+}
+
 template <class Density>
 class FieldWindow {
  public:
   static constexpr int m = Density::kDim;
+  static constexpr unsigned kConstraints = action::ConstraintMaskOf<Density>();
   using System = action::FieldSystem<Density>;
   using Clock = std::chrono::steady_clock;
 
@@ -56,6 +91,15 @@ class FieldWindow {
         rho_(SpectralRadius(grid)),
         modes_(density, options.sparse),
         sparse_(options.sparse) {
+    CheckLinearSolver<Density>(grid, options.linear, options.boundary);
+    if (options.linear == WindowLinearSolver::kFourier)
+      fourier_.emplace(density);
+    if (kConstraints != 0u) {
+      no_predictor_ =
+          "a component without a time derivative (a constraint such as A₀) "
+          "has no explicit integration to check the windows against";
+      return;
+    }
     const typename FieldPredictor<Density>::End ends[2] = {
         {options.boundary.left.kind, options.boundary.left.value},
         {options.boundary.right.kind, options.boundary.right.value}};
@@ -136,6 +180,7 @@ class FieldWindow {
     if (fresh) {
       modes_.Invalidate();
       sparse_.Invalidate();
+      if (fourier_) fourier_->Invalidate();
     }
     if (options_.linear == WindowLinearSolver::kSparseLu &&
         sparse_points_ != points) {
@@ -145,6 +190,8 @@ class FieldWindow {
     }
     const auto r = options_.linear == WindowLinearSolver::kModes
                        ? variational::Newton<double>(sys, y_, newton, modes_)
+                   : fourier_
+                       ? variational::Newton<double>(sys, y_, newton, *fourier_)
                        : variational::Newton<double>(sys, y_, newton, sparse_);
     if (!detail::AccountNewton(r, a, timings_, residual_)) return false;
     lap = Clock::now();
@@ -230,7 +277,8 @@ class FieldWindow {
 
   bool ReusesFactorizations() const { return true; }
   long long factorizations() const {
-    return modes_.mode_factorizations() + lu_factorizations();
+    return modes_.mode_factorizations() + lu_factorizations() +
+           (fourier_ ? fourier_->factorizations() : 0);
   }
 
   // What a FieldSolution reports.
@@ -265,6 +313,7 @@ class FieldWindow {
   std::string no_predictor_;
   ModesSolver<Density> modes_;
   SparseLuSolver sparse_;
+  std::optional<FourierSolver<Density>> fourier_;
   int sparse_points_ = -1;
   long long sparse_retired_ = 0;
   detail::WindowOperator time_;

@@ -117,6 +117,7 @@ class FourierSolver {
     solver_ = std::make_unique<FourierWindowSolver>(
         sys.time_operator(), sys.space_grid(), Density::kDim, hessian_,
         action::ConstraintMaskOf<Density>());
+    ++factorizations_;
     valid = false;
   }
   template <class System>
@@ -124,10 +125,13 @@ class FourierSolver {
   bool Factorize() { return solver_ != nullptr; }
   void Solve(double* b) const { solver_->Solve(b); }
   const FourierWindowSolver& solver() const { return *solver_; }
+  // Window systems built (each factors the half spectrum's wave vectors).
+  long long factorizations() const { return factorizations_; }
 
  private:
   Eigen::MatrixXd hessian_;
   std::unique_ptr<FourierWindowSolver> solver_;
+  long long factorizations_ = 0;
 };
 
 }  // namespace vivp::spacetime

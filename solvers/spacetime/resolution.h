@@ -108,13 +108,13 @@ double FastestFieldFrequency(const Density& density,
   // One component: the eigenvalues are quotients; more: the small dense
   // solver (its allocations were a tenth of this check's time for m = 1).
   Eigen::MatrixXd mass(m, m), c(m, m), k(m, m);
+  std::vector<int> dynamic;
+  for (int a = 0; a < m; ++a)
+    if (!((action::ConstraintMaskOf<Density>() >> a) & 1u))
+      dynamic.push_back(a);
   for (int j = begin; j < n; ++j) {
     double z[K];
-    for (int a = 0; a < m; ++a) {
-      z[a] = phi[j * m + a];
-      z[m + a] = phi_t[j * m + a];
-    }
-    for (int k = 0; k < d * m; ++k) z[2 * m + k] = phi_x[j * d * m + k];
+    action::SliceArguments<m, d>(j, phi.data(), phi_t.data(), phi_x.data(), z);
     const auto h = autodiff::Hessian<double, K>(
         [&](const auto* w) { return density(w, w + m, w + 2 * m); }, z);
     double wc, wk;
@@ -127,11 +127,17 @@ double FastestFieldFrequency(const Density& density,
       wc = mj != 0 ? std::max(0.0, cmax / mj) : 0.0;
       wk = mj != 0 ? std::max(0.0, -h.hessian(0, 0) / mj) : 0.0;
     } else {
-      mass = h.hessian.template block<m, m>(m, m);
-      k = -h.hessian.template block<m, m>(0, 0);
+      // A component without a time derivative (A₀) is a constraint, not an
+      // oscillator: the frequencies are those of the others.
+      auto block = [&](int r, int col) {
+        return Eigen::MatrixXd(h.hessian.template block<m, m>(r, col))(dynamic,
+                                                                       dynamic);
+      };
+      mass = block(m, m);
+      k = -block(0, 0);
       wc = 0;
       for (int b = 0; b < d; ++b) {
-        c = -h.hessian.template block<m, m>((2 + b) * m, (2 + b) * m);
+        c = -block((2 + b) * m, (2 + b) * m);
         wc = std::max(wc, linalg::LargestGeneralizedEigenvalue(c, mass));
       }
       wk = linalg::LargestGeneralizedEigenvalue(k, mass);

@@ -194,6 +194,7 @@ FieldSolution SolveFieldWith(const Density& density,
         "dimension; in " +
         std::to_string(space.dim()) + " give Neumann data per face (faces)");
   CheckFaces(space, options.boundary.faces);
+  CheckLinearSolver<Density>(space, options.linear, options.boundary);
   const variational::Tolerance& tol = options.tolerance;
   if (adaptive &&
       !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&

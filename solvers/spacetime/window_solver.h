@@ -36,10 +36,14 @@
 namespace vivp::spacetime {
 
 // Which linear solver a field window uses.
-enum class WindowLinearSolver { kModes, kSparseLu };
+// kFourier: fourier_solver.h, for linear fields on periodic grids and
+// the only one for gauge fields (a Jacobian singular along the gauge).
+enum class WindowLinearSolver { kModes, kSparseLu, kFourier };
 
 inline std::string_view WindowLinearSolverName(WindowLinearSolver s) {
-  return s == WindowLinearSolver::kModes ? "modes" : "sparse-lu";
+  return s == WindowLinearSolver::kModes      ? "modes"
+         : s == WindowLinearSolver::kSparseLu ? "sparse-lu"
+                                              : "fourier";
 }
 
 class SparseLuSolver {
