@@ -1,7 +1,8 @@
 // What the gauge-field tests share: a window's Jacobian as a dense matrix
 // (tests on a few hundred unknowns; the solves never form it), and for
-// electromagnetism in 2 + 1 D on a periodic grid the exact semi-discrete
-// plane wave, the fields E and B of a march's slices, and random gauges.
+// electromagnetism in 2 + 1 D on a periodic grid the gauge parts of a
+// march, its observables at every slice, and random gauges (the plane wave
+// and the fields E, B are studies/gauge_waves.h's).
 #pragma once
 
 #include <Eigen/Dense>
@@ -15,6 +16,7 @@
 #include "problems/fields/gauge.h"
 #include "solvers/spacetime/assembly.h"
 #include "solvers/spacetime/solve.h"
+#include "studies/gauge_waves.h"
 
 namespace gauge_test {
 
@@ -27,87 +29,10 @@ Eigen::MatrixXd DenseJacobian(const System& sys, const std::vector<double>& y) {
 
 using Grid = vivp::sbp::SpaceGrid<double>;
 
-// A slice of (A₀, A₁, A₂) and its time derivative, value j·3 + a.
-struct Slices {
-  std::vector<double> phi, phi_t;
-};
-
-// E_b = −D_bA₀ − ∂_tA_b and B = D_0A₁ − D_1A₀ of one slice.
-struct Fields {
-  std::vector<double> e, b;
-};
-inline Fields FieldsOf(const Grid& g, std::span<const double> phi,
-                       std::span<const double> phi_t) {
-  const int n = g.points();
-  std::vector<double> grad(std::size_t(n) * 6);
-  Grid::GradientWork<double> w;
-  g.Gradient<double>(3, phi, grad, w);
-  auto d = [&](int j, int b, int a) { return grad[(j * 2 + b) * 3 + a]; };
-  Fields f{std::vector<double>(std::size_t(n) * 2), std::vector<double>(n)};
-  for (int j = 0; j < n; ++j) {
-    for (int b = 0; b < 2; ++b)
-      f.e[j * 2 + b] = -d(j, b, 0) - phi_t[j * 3 + 1 + b];
-    f.b[j] = d(j, 0, 2) - d(j, 1, 1);
-  }
-  return f;
-}
-
-// A = ε sin(k·x − ωt), A₀ = 0, exact for the spatially discrete equations:
-// D_b sin(k_b x + c) = σ_b cos(k_b x + c) for the central stencils, so
-// ω = |σ| and ε ⊥ σ. The errors of E and B at t are relative to their
-// amplitudes.
-class PlaneWave {
- public:
-  PlaneWave(const Grid& g, int kx, int ky) : g_(g), k_{double(kx), double(ky)} {
-    for (int b = 0; b < 2; ++b) {
-      const auto& axis = g.axis(b);
-      std::vector<double> u(axis.points()), du(axis.points());
-      for (int j = 0; j < axis.points(); ++j)
-        u[j] = std::sin(k_[b] * axis.x(j));
-      axis.Apply<double>(u, du);
-      sigma_[b] = du[0];
-    }
-    omega_ = std::hypot(sigma_[0], sigma_[1]);
-    eps_[0] = -sigma_[1] / omega_;
-    eps_[1] = sigma_[0] / omega_;
-  }
-  Slices At(double t) const {
-    const int n = g_.points();
-    Slices s{std::vector<double>(std::size_t(n) * 3, 0.0),
-             std::vector<double>(std::size_t(n) * 3, 0.0)};
-    for (int j = 0; j < n; ++j)
-      for (int b = 0; b < 2; ++b) {
-        s.phi[j * 3 + 1 + b] = eps_[b] * std::sin(Phase(j, t));
-        s.phi_t[j * 3 + 1 + b] = -omega_ * eps_[b] * std::cos(Phase(j, t));
-      }
-    return s;
-  }
-  struct Error {
-    double e = 0, b = 0;
-  };
-  Error Errors(std::span<const double> phi, std::span<const double> phi_t,
-               double t) const {
-    const Fields f = FieldsOf(g_, phi, phi_t);
-    const double bamp = sigma_[0] * eps_[1] - sigma_[1] * eps_[0];
-    Error r;
-    for (int j = 0; j < g_.points(); ++j) {
-      const double c = std::cos(Phase(j, t));
-      for (int b = 0; b < 2; ++b)
-        r.e = std::max(r.e, std::abs(f.e[j * 2 + b] - omega_ * eps_[b] * c));
-      r.b = std::max(r.b, std::abs(f.b[j] - bamp * c));
-    }
-    r.e /= omega_;
-    r.b /= std::abs(bamp);
-    return r;
-  }
-
- private:
-  double Phase(int j, double t) const {
-    return k_[0] * g_.x(j, 0) + k_[1] * g_.x(j, 1) - omega_ * t;
-  }
-  const Grid& g_;
-  double k_[2], sigma_[2], eps_[2], omega_;
-};
+using Slices = vivp::studies::MaxwellSlice;
+using Fields = vivp::studies::MaxwellFields;
+using PlaneWave = vivp::studies::MaxwellPlaneWave;
+using vivp::studies::FieldsOf;
 
 // How far the march's gauge moved: max |A₀| and max |D·A| over the slices
 // (both 0 for the transverse wave's data).
