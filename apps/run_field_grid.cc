@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <span>
 #include <sstream>
 
 #include "apps/run_field.h"
@@ -18,21 +19,50 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every component of slice k in the plane z = middle (the whole slice on 2
-// axes), as a 2-D slice to draw.
+// |E| of a gauge field's slice k at every point: E_b = −D_bA₀ − ∂_tA_b
+// (the potentials depend on the gauge, E does not).
+std::vector<double> ElectricMagnitude(const sbp::SpaceGrid<double>& grid,
+                                      const scene::FieldRun& run,
+                                      std::size_t k) {
+  const int d = grid.dim(), m = d + 1;
+  const std::size_t n = grid.points(), per = n * m;
+  const std::span<const double> phi(run.solution.phi.data() + k * per, per);
+  std::vector<double> gx(per * d), e(n);
+  sbp::SpaceGrid<double>::GradientWork<double> w;
+  grid.Gradient<double>(m, phi, gx, w);
+  for (std::size_t j = 0; j < n; ++j) {
+    double e2 = 0;
+    for (int b = 0; b < d; ++b) {
+      const double eb =
+          -gx[(j * d + b) * m] - run.solution.phi_t[k * per + j * m + 1 + b];
+      e2 += eb * eb;
+    }
+    e[j] = std::sqrt(e2);
+  }
+  return e;
+}
+
+// Every component of slice k (|E| of a gauge field) in the plane
+// z = middle (the whole slice on 2 axes), as a 2-D slice to draw.
 report::Slice2d PlaneOf(const scene::FieldScene& s,
                         const sbp::SpaceGrid<double>& grid,
                         const scene::FieldRun& run, std::size_t k) {
-  const int m = s.components;
   const int nx = grid.points(0), ny = grid.points(1);
   report::Slice2d out;
-  out.components = m;
   out.t = run.solution.t[k];
   for (int i = 0; i < nx; ++i) out.x.push_back(grid.axis(0).x(i));
   for (int i = 0; i < ny; ++i) out.y.push_back(grid.axis(1).x(i));
-  const std::size_t per = std::size_t(grid.points()) * m;
   const std::size_t plane =
       grid.dim() == 3 ? std::size_t(grid.points(2) / 2) * nx * ny : 0;
+  if (s.Gauge()) {
+    const auto e = ElectricMagnitude(grid, run, k);
+    out.values.assign(e.begin() + std::ptrdiff_t(plane),
+                      e.begin() + std::ptrdiff_t(plane + std::size_t(nx) * ny));
+    return out;
+  }
+  const int m = s.components;
+  out.components = m;
+  const std::size_t per = std::size_t(grid.points()) * m;
   const double* first = run.solution.phi.data() + k * per + plane * m;
   out.values.assign(first, first + std::size_t(nx) * ny * m);
   return out;
@@ -93,13 +123,16 @@ std::vector<std::string> WriteSlicePictures(
           ? " (plane z = " +
                 std::to_string(grid.axis(2).x(grid.points(2) / 2)) + ")"
           : "";
+  const std::string label = s.Gauge() ? "|E|" : "φ";
+  const bool symmetric = !s.Gauge();  // |E| ≥ 0: its own range
   pictures = {{"heat_maps", nlohmann::json::array()}};
   for (std::size_t i = 0; i < s.output.heat_maps.size(); ++i) {
     const std::size_t k = Nearest(run.solution.t, s.output.heat_maps[i]);
     const std::string stem = "heat_map_" + std::to_string(i);
     try {
-      report::SliceMap(dir, stem, PlaneOf(s, grid, run, k),
-                       {.title = title + plane});
+      report::SliceMap(
+          dir, stem, PlaneOf(s, grid, run, k),
+          {.title = title + plane, .label = label, .symmetric = symmetric});
       files.push_back(stem + ".png");
       pictures["heat_maps"].push_back(
           {{"file", stem + ".png"}, {"t", run.solution.t[k]}});
@@ -119,7 +152,9 @@ std::vector<std::string> WriteSlicePictures(
           n <= kFrames ? i : (i * (n - 1) + (kFrames - 1) / 2) / (kFrames - 1);
       frames.push_back(PlaneOf(s, grid, run, slices[pick]));
     }
-    report::SliceAnimation(dir, "field", frames, {.title = title + plane});
+    report::SliceAnimation(
+        dir, "field", frames,
+        {.title = title + plane, .label = label, .symmetric = symmetric});
     files.push_back("field.gif");
     pictures["animation"] = "field.gif";
   } catch (const std::exception& e) {

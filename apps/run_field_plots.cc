@@ -35,6 +35,12 @@ CurveOf Describe(const std::string& column) {
   if (column == "charge")
     return {"Q(t) - Q(0)", "charge",
             "U(1) charge Q = Σ Hx (φ_0 π_1 − φ_1 π_0), change", true, false};
+  if (column == "gauss")
+    return {"max_x |G| / terms", "gauss",
+            "Gauss's law of the action (A₀'s equation), relative", false, true};
+  if (column == "gauss_textbook")
+    return {"max_x |∇·E| / terms", "gauss_textbook",
+            "textbook Gauss law ∇·E (exact derivative), relative", false, true};
   return {"max_x |φ − φ_exact|", "error", "error against the exact solution",
           false, true};
 }

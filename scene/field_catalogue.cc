@@ -40,9 +40,15 @@ const std::vector<std::string>& FieldProfileNames() {
 }
 
 const std::vector<std::string>& FieldDiagnosticNames() {
-  static const std::vector<std::string> names = {"energy", "momentum", "charge",
-                                                 "error"};
+  static const std::vector<std::string> names = {
+      "energy", "momentum", "charge", "error", "gauss", "gauss_textbook"};
   return names;
+}
+
+bool FieldScene::Gauge() const {
+  return std::any_of(terms.begin(), terms.end(), [](const ListedEffect& e) {
+    return e.type->name == "maxwell";
+  });
 }
 
 bool FieldScene::Wants(const std::string& diagnostic) const {
@@ -178,7 +184,9 @@ std::string FieldSchemaHelp() {
        "               allow_jump = false periodic: run a profile that is "
        "not periodic\n"
        "  [time]       end = T, points = Nt\n"
-       "  [method]     operator = \"sbp42\", window_points = 0 (0: global)\n"
+       "  [method]     operator = \"sbp42\", window_points = 0 (0: global),\n"
+       "               linear_solver = \"modes\" | \"sparse-lu\" | "
+       "\"fourier\"\n"
        "  [output]     diagnostics = []   "
     << detail::Join(FieldDiagnosticNames())
     << "\n"
@@ -193,7 +201,13 @@ std::string FieldSchemaHelp() {
        "(or one\n"
        "  for all); profiles gaussian, ring, oscillon, plane_wave (center, k "
        "per axis);\n"
-       "  output in HDF5 (docs/field_scenes.md §8).\n\n"
+       "  output in HDF5 (docs/field_scenes.md §8).\n"
+       "  A 'maxwell' term (alone, every axis periodic): the components are "
+       "the\n"
+       "  potentials A₀ … A_d, linear_solver = \"fourier\", windows of 16; "
+       "profile\n"
+       "  plane_wave (k, amplitude); diagnostics gauss, gauss_textbook "
+       "(docs/gauge.md).\n\n"
        "Terms (parameter = default):\n";
   for (const auto& t : FieldTermCatalogue()) {
     h << "  " << t.name << ": " << t.formula;

@@ -14,7 +14,8 @@
 //               long-lived oscillating lump (no exact solution).
 //   plane_wave  φ = A cos(k·x − ωt) (and φ₁ = A sin(k·x − ωt) for two
 //               components), exact with ω² = c²|k|² + w(A²) as in one
-//               dimension.
+//               dimension; with a 'maxwell' term the transverse wave
+//               A = A ε sin(k·x − ωt), A₀ = 0, ω = |k|, ε ⊥ k.
 #include <cmath>
 #include <map>
 
@@ -116,6 +117,41 @@ ProfileFormulas PlaneWaveNd(const ProfileValues& p, const TermSet& terms) {
   return f;
 }
 
+// Electromagnetism: A = A ε sin(k·x − ωt), A₀ = 0, ω = |k|, ε a unit
+// vector ⊥ k (in 2 D (−k_y, k_x)/|k|; in 3 D along k × ẑ, or k × x̂ when
+// k ∥ ẑ): the continuum's transverse wave, exact in the gauge A₀ = 0.
+ProfileFormulas MaxwellWave(const ProfileValues& p) {
+  const std::vector<double> k = p.s.initial.vectors.at("k");
+  const int d = int(k.size());
+  double k2 = 0;
+  for (double ka : k) k2 += ka * ka;
+  if (!(k2 > 0)) p.Fail("k", "k = 0 is not a wave", "a wave vector k ≠ 0");
+  const double omega = std::sqrt(k2), amplitude = p["amplitude"];
+  std::vector<double> eps(d);
+  if (d == 2) {
+    eps = {-k[1] / omega, k[0] / omega};
+  } else {
+    const bool along_z = k[0] == 0 && k[1] == 0;
+    const double u[3] = {along_z ? 1.0 : 0.0, 0.0, along_z ? 0.0 : 1.0};
+    eps = {k[1] * u[2] - k[2] * u[1], k[2] * u[0] - k[0] * u[2],
+           k[0] * u[1] - k[1] * u[0]};
+    const double norm =
+        std::sqrt(eps[0] * eps[0] + eps[1] * eps[1] + eps[2] * eps[2]);
+    for (double& e : eps) e /= norm;
+  }
+  const Formula wave = [k, eps, omega, amplitude](double t, const double* x,
+                                                  double* phi, double* phi_t) {
+    double phase = -omega * t;
+    for (std::size_t b = 0; b < k.size(); ++b) phase += k[b] * x[b];
+    phi[0] = phi_t[0] = 0;
+    for (std::size_t b = 0; b < k.size(); ++b) {
+      phi[1 + b] = amplitude * eps[b] * std::sin(phase);
+      phi_t[1 + b] = -omega * amplitude * eps[b] * std::cos(phase);
+    }
+  };
+  return {wave, wave, ""};
+}
+
 }  // namespace
 
 const std::vector<std::string>& ProfileNamesNd() {
@@ -148,6 +184,15 @@ ProfileFormulas MakeProfileNd(const TomlReader& r, const toml::table& initial,
   const ProfileValues p{r, initial, s};
   const TermSet terms{s};
   const std::string& name = s.initial.profile;
+  if (s.Gauge()) {
+    if (name != "plane_wave")
+      p.Fail("profile",
+             "profile " + Quote(name) +
+                 " is for a scalar field, not the "
+                 "potentials of a 'maxwell' term",
+             "profile = \"plane_wave\" (a transverse wave)");
+    return MaxwellWave(p);
+  }
   if (name == "plane_wave") return PlaneWaveNd(p, terms);
   if (s.components != 1)
     p.Fail("profile",

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/action/field_charges.h"
+#include "core/action/field_constraints.h"
 #include "core/sbp/builder.h"
 #include "solvers/distributed/composed.h"
 #include "solvers/spacetime/composed.h"
@@ -18,7 +19,7 @@ namespace {
 double SliceError(const FieldScene& s, const sbp::SpaceGrid<double>& grid,
                   double t, const double* slice) {
   const int m = s.components;
-  double phi[2], phi_t[2], x[3], worst = 0;
+  double phi[4], phi_t[4], x[3], worst = 0;
   for (int j = 0; j < grid.points(); ++j) {
     for (int a = 0; a < grid.dim(); ++a) x[a] = grid.x(j, a);
     s.exact(t, x, phi, phi_t);
@@ -29,6 +30,12 @@ double SliceError(const FieldScene& s, const sbp::SpaceGrid<double>& grid,
     }
   }
   return worst;
+}
+
+// The larger of two residuals, NaN if either is (a non-finite slice stays
+// visible in the summary).
+double MaxOrNan(double a, double b) {
+  return std::isnan(a) || std::isnan(b) ? NAN : std::max(a, b);
 }
 
 // The diagnostics' columns: the scene's names, with "momentum" one column
@@ -54,11 +61,42 @@ double Column(const std::string& name, const action::FieldCharges& q) {
   return q.charge;
 }
 
-template <int M, int d>
-FieldRun Run(const FieldScene& s,
+// A gauge field's error: max over the grid and axes of |E − E_exact|, E_b =
+// −D_bA₀ − ∂_tA_b of the slice and of the exact potentials (the potentials
+// themselves depend on the gauge; E does not).
+template <int d>
+double GaugeSliceError(const FieldScene& s, const sbp::SpaceGrid<double>& grid,
+                       double t, std::span<const double> phi,
+                       std::span<const double> phi_t) {
+  constexpr int m = d + 1;
+  const std::size_t n = grid.points();
+  std::vector<double> exact(n * m), exact_t(n * m), gx(n * d * m),
+      ex(n * d * m);
+  double x[3];
+  for (std::size_t j = 0; j < n; ++j) {
+    for (int a = 0; a < d; ++a) x[a] = grid.x(int(j), a);
+    s.exact(t, x, &exact[j * m], &exact_t[j * m]);
+  }
+  sbp::SpaceGrid<double>::GradientWork<double> w;
+  grid.Gradient<double>(m, phi, gx, w);
+  grid.Gradient<double>(m, exact, ex, w);
+  double worst = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    for (int b = 0; b < d; ++b) {
+      const double e = -gx[(j * d + b) * m] - phi_t[j * m + 1 + b];
+      const double e0 = -ex[(j * d + b) * m] - exact_t[j * m + 1 + b];
+      if (std::isnan(e - e0)) return NAN;
+      worst = std::max(worst, std::abs(e - e0));
+    }
+  return worst;
+}
+
+template <int d, class Density>
+FieldRun Run(const Density& density, const FieldScene& s,
              const std::function<void(int, int, double)>& on_window,
              const FieldRunHooks& hooks) {
-  const auto density = s.Density<M, d>();
+  constexpr int M = Density::kDim;
+  constexpr bool gauge = action::ConstraintMaskOf<Density>() != 0u;
   const auto grid = s.Grid();
   FieldRun run;
   if (d == 1)
@@ -70,9 +108,7 @@ FieldRun Run(const FieldScene& s,
   options.boundary = s.Boundary();
   options.tolerance = s.method.tolerance;
   options.max_points = kMaxFieldValues / (grid.points() * M);
-  options.linear = s.method.linear_solver == "sparse-lu"
-                       ? spacetime::WindowLinearSolver::kSparseLu
-                       : spacetime::WindowLinearSolver::kModes;
+  options.linear = spacetime::WindowLinearSolverNamed(s.method.linear_solver);
   const spacetime::FieldGrid time{.op = s.method.op,
                                   .points = s.time_points,
                                   .t_end = s.t_end,
@@ -84,6 +120,13 @@ FieldRun Run(const FieldScene& s,
           "a field on one axis runs on one process: run it without mpirun");
     run.solution = spacetime::SolveField(density, s.Space(), time, s.phi0,
                                          s.phi_t0, options);
+  } else if constexpr (gauge) {
+    if (hooks.comm && hooks.comm->size() > 1)
+      throw std::invalid_argument(
+          "a gauge field is not built across ranks: run it on one process, "
+          "without mpirun");
+    run.solution =
+        spacetime::SolveField(density, grid, time, s.phi0, s.phi_t0, options);
   } else if (hooks.comm) {
     run.solution = distributed::SolveField(*hooks.comm, density, grid, time,
                                            s.phi0, s.phi_t0, options);
@@ -102,19 +145,43 @@ FieldRun Run(const FieldScene& s,
   const std::size_t n = std::size_t(grid.points()) * M;
   const bool charges =
       s.Wants("energy") || s.Wants("momentum") || s.Wants("charge");
+  if (gauge) run.gauss_residual = run.gauss_textbook = 0;
   for (std::size_t k = 0; k < sol.t.size(); ++k) {
     const std::span<const double> phi(sol.phi.data() + k * n, n);
     const std::span<const double> phi_t(sol.phi_t.data() + k * n, n);
     action::FieldCharges q;
     if (charges) q = action::ChargesOfSlice(density, grid, phi, phi_t);
-    for (std::size_t c = 0; c < run.columns.size(); ++c)
-      run.values[c].push_back(run.columns[c] == "error"
-                                  ? SliceError(s, grid, sol.t[k], phi.data())
-                                  : Column(run.columns[c], q));
+    double gauss = NAN, textbook = NAN;
+    if constexpr (gauge) {
+      gauss = action::ConstraintsOfSlice(density, grid, phi, phi_t).relative();
+      textbook = action::TextbookConstraintsOfSlice(density, grid, phi, phi_t)
+                     .relative();
+      run.gauss_residual = MaxOrNan(run.gauss_residual, gauss);
+      run.gauss_textbook = MaxOrNan(run.gauss_textbook, textbook);
+    }
+    for (std::size_t c = 0; c < run.columns.size(); ++c) {
+      const std::string& name = run.columns[c];
+      double v = Column(name, q);
+      if (name == "gauss") v = gauss;
+      if (name == "gauss_textbook") v = textbook;
+      if (name == "error")
+        v = gauge ? GaugeSliceError<d>(s, grid, sol.t[k], phi, phi_t)
+                  : SliceError(s, grid, sol.t[k], phi.data());
+      run.values[c].push_back(v);
+    }
   }
   if (s.exact)
-    run.end_state_error = SliceError(s, grid, s.t_end, sol.end.phi.data());
+    run.end_state_error =
+        gauge ? GaugeSliceError<d>(s, grid, s.t_end, sol.end.phi, sol.end.phi_t)
+              : SliceError(s, grid, s.t_end, sol.end.phi.data());
   return run;
+}
+
+template <int M, int d>
+FieldRun Run(const FieldScene& s,
+             const std::function<void(int, int, double)>& on_window,
+             const FieldRunHooks& hooks) {
+  return Run<d>(s.Density<M, d>(), s, on_window, hooks);
 }
 
 }  // namespace
@@ -122,6 +189,9 @@ FieldRun Run(const FieldScene& s,
 FieldRun RunFieldScene(const FieldScene& s,
                        const std::function<void(int, int, double)>& on_window,
                        const FieldRunHooks& hooks) {
+  if (s.Gauge())
+    return s.Dim() == 3 ? Run<3>(fields::MaxwellIn<3>{}, s, on_window, hooks)
+                        : Run<2>(fields::MaxwellIn<2>{}, s, on_window, hooks);
   const bool two = s.components == 2;
   switch (s.Dim()) {
     case 2:

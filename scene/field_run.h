@@ -6,6 +6,7 @@
 // Nothing is written here: apps/ writes the files.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -20,8 +21,9 @@ struct FieldRun {
   spacetime::FieldSolution solution;  // every slice kept
   std::vector<double> x;  // one axis: its points (a grid: FieldScene::Grid())
   // The scene's diagnostics in its order, one value per slice of solution.t:
-  // energy, momentum, charge (∑ Hˣ of the densities) and error
-  // (max over x and components of |φ − φ_exact|).
+  // energy, momentum, charge (∑ Hˣ of the densities), error (max over x
+  // and components of |φ − φ_exact|; of E − E_exact for a gauge field),
+  // gauss and gauss_textbook (a gauge field's Gauss laws, relative).
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;
   // Per slice: whether its φ_t is the closure row of D_t, an order less
@@ -33,6 +35,10 @@ struct FieldRun {
   long long first_node = 0;
   // The corrected end state against the exact solution, NaN without one.
   double end_state_error = 0;
+  // A gauge field: the largest relative residual of Gauss's law of the
+  // action (A₀'s equation) and of the textbook law over every slice
+  // (core/action/field_constraints.h); NaN for other fields.
+  double gauss_residual = NAN, gauss_textbook = NAN;
 };
 
 // on_window(done, total, t) after each window (see FieldSolveOptions).

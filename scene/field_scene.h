@@ -31,7 +31,7 @@
 //   window_points = 16                      # 0: one global solve
 //   tolerance = 1e-6                        # error control (or
 //                                           # {absolute = …, relative = …})
-//   linear_solver = "modes"                 # modes | sparse-lu
+//   linear_solver = "modes"                 # modes | sparse-lu | fourier
 //   [output]
 //   diagnostics = ["energy", "error"]       # energy, momentum, charge, error
 //   stride = 1                              # every stride-th slice
@@ -159,6 +159,8 @@ struct FieldScene : FieldAxis {
   std::vector<std::string> warnings;
 
   bool Wants(const std::string& diagnostic) const;
+  // A gauge field: the 'maxwell' term, solved as fields::MaxwellIn<d>.
+  bool Gauge() const;
   // The ends' data for the solver (constant in time); on a grid of d > 1
   // axes, Neumann faces.
   spacetime::FieldBoundary Boundary() const;

@@ -11,6 +11,44 @@
 
 namespace vivp::scene::detail {
 
+namespace {
+
+// A 'maxwell' term: the field is the potentials (A₀, A₁ … A_d) on a
+// periodic grid of 2 or 3 axes, alone (docs/field_scenes.md).
+void ReadGaugeField(const TomlReader& r, const toml::table& root,
+                    FieldScene& s) {
+  const ListedEffect* maxwell = nullptr;
+  for (const auto& e : s.terms)
+    if (e.type->name == "maxwell") maxwell = &e;
+  for (const auto& e : s.terms)
+    if (e.type->name != "maxwell")
+      r.Fail(e.line, e.column,
+             "term " + Quote(e.type->name) +
+                 " cannot join 'maxwell': charged matter and other terms "
+                 "with a gauge field are not built yet",
+             "expected the 'maxwell' term alone");
+  if (s.Dim() == 1)
+    r.Fail(maxwell->line, maxwell->column,
+           "term 'maxwell' on one axis has no waves and no charges: nothing "
+           "would evolve",
+           "expected a [field] of 2 or 3 axes");
+  for (int a = 0; a < s.Dim(); ++a)
+    if (s.Axis(a).boundary != "periodic")
+      r.Fail(maxwell->line, maxwell->column,
+             std::string("term 'maxwell' is solved on periodic grids only; "
+                         "axis ") +
+                 "xyz"[a] + " is " + s.Axis(a).boundary,
+             "expected boundary = \"periodic\" on every axis");
+  if (const toml::node* n = root["field"]["components"].node())
+    r.Fail(*n,
+           "a 'maxwell' field's components are its potentials (A₀, A₁ … "
+           "A_d), one more than the axes",
+           "expected no 'components' in [field]");
+  s.components = s.Dim() + 1;
+}
+
+}  // namespace
+
 void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
   const toml::node* n = root.get("term");
   const std::string names = Join([] {
@@ -39,6 +77,7 @@ void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
              "expected components = 1, or a 'mass', 'phi4' or 'quartic' term");
     s.terms.push_back(spec);
   }
+  if (s.Gauge()) ReadGaugeField(r, root, s);
   if (std::none_of(s.terms.begin(), s.terms.end(),
                    [](const ListedEffect& e) { return e.type->kinetic; }))
     r.Fail(s.terms.front().line, s.terms.front().column,
@@ -55,9 +94,29 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
     s.method.op = r.Choice(*n, "operator", sbp::OperatorNames());
   if (const toml::node* n = t.get("tolerance"))
     s.method.tolerance = ReadTolerance(r, *n);
-  if (const toml::node* n = t.get("linear_solver"))
+  // A gauge field's window is singular along the gauge: only the Fourier
+  // window solve takes it, in windows (16 points unless given).
+  if (s.Gauge()) s.method.linear_solver = "fourier";
+  if (const toml::node* n = t.get("linear_solver")) {
     s.method.linear_solver =
-        r.Choice(*n, "linear_solver", {"modes", "sparse-lu"});
+        r.Choice(*n, "linear_solver", {"modes", "sparse-lu", "fourier"});
+    if (s.Gauge() && s.method.linear_solver != "fourier")
+      r.Fail(*n,
+             "linear_solver = " + Quote(s.method.linear_solver) +
+                 " cannot solve a 'maxwell' field, whose window is singular "
+                 "along the gauge",
+             "expected linear_solver = \"fourier\" (or none)");
+    if (s.method.linear_solver == "fourier")
+      for (int a = 0; a < s.Dim(); ++a)
+        if (s.Axis(a).boundary != "periodic")
+          r.Fail(*n,
+                 std::string("linear_solver = \"fourier\" needs periodic "
+                             "axes; axis ") +
+                     "xyz"[a] + " is " + s.Axis(a).boundary,
+                 "expected \"modes\" or \"sparse-lu\" on this grid");
+  }
+  if (s.method.linear_solver == "fourier" && !t.get("window_points"))
+    s.method.window_points = 16;
   if (const toml::node* n = t.get("window_points")) {
     const long long minimum = sbp::Table(s.method.op).min_points;
     const std::string expected = "0 (one global solve) or at least " +
@@ -69,6 +128,12 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
              "window_points = " + std::to_string(s.method.window_points) +
                  " is below the operator's minimum",
              "expected " + expected);
+    if (s.method.window_points == 0 && s.method.linear_solver == "fourier")
+      r.Fail(*n,
+             "window_points = 0 asks for one global solve, but the Fourier "
+             "window solve is dense in a window's time points",
+             "expected window_points >= " + std::to_string(minimum) +
+                 " (16 to 64 is typical)");
     if (s.method.window_points == 0 && s.method.tolerance.enabled())
       r.Fail(*n,
              "window_points = 0 asks for one global solve, but a tolerance "
@@ -77,6 +142,30 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
                  ", or no window_points (16), or no tolerance");
   }
 }
+
+namespace {
+
+// The Fourier window solve holds a dense complex system of (W + 2)m
+// unknowns per wave vector of the half spectrum (solvers/spacetime/
+// fourier_solver.h): N (W + 2)² m² / 2 complex numbers.
+void CheckFourierSize(const TomlReader& r, const toml::table& root,
+                      const FieldScene& s) {
+  const double w =
+      double(s.method.window_points > 0 ? s.method.window_points : 16);
+  const double bytes = 8.0 * double(s.GridPoints()) * (w + 2) * (w + 2) *
+                       s.components * s.components;
+  if (bytes <= spacetime::kFourierBytes) return;
+  const toml::node* n = root["method"]["window_points"].node();
+  if (!n) n = root["field"]["points"].node();
+  r.Fail(*n,
+         "the Fourier window solve would hold " +
+             FormatNumber(bytes / (1 << 30)) + " GiB of factors",
+         "expected at most " +
+             FormatNumber(spacetime::kFourierBytes / (1 << 30)) +
+             " GiB: fewer spatial points or shorter [method] window_points");
+}
+
+}  // namespace
 
 void ReadFieldTime(const TomlReader& r, const toml::table& root,
                    FieldScene& s) {
@@ -91,10 +180,10 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
   const long long slice = s.GridPoints() * s.components;
   const long long minimum = sbp::Table(s.method.op).min_points;
   const spacetime::WindowLinearSolver linear =
-      s.method.linear_solver == "sparse-lu"
-          ? spacetime::WindowLinearSolver::kSparseLu
-          : spacetime::WindowLinearSolver::kModes;
+      spacetime::WindowLinearSolverNamed(s.method.linear_solver);
   const long long most = spacetime::MaxSolvedAtOnce(s.method.op, linear);
+  if (linear == spacetime::WindowLinearSolver::kFourier)
+    CheckFourierSize(r, root, s);
   if (s.method.tolerance.enabled()) {
     // Error control chooses the time grid: no points, windows of 16 unless
     // given.
@@ -209,6 +298,11 @@ void ReadFieldPictures(const TomlReader& r, const toml::table& t,
 void ReadSpectra(const TomlReader& r, const toml::table& t, FieldScene& s) {
   const toml::node* n = t.get("spectra");
   if (!n) return;
+  if (s.Gauge())
+    r.Fail(*n,
+           "'spectra' are of φ, and a 'maxwell' field's φ is its potentials, "
+           "which depend on the gauge",
+           "expected no spectra (heat maps show |E|)");
   for (int a = 0; a < s.Dim(); ++a)
     if (s.Axis(a).boundary != "periodic")
       r.Fail(*n,
@@ -248,6 +342,16 @@ void ReadFieldOutput(const TomlReader& r, const toml::table& root,
     s.output.diagnostics = ReadDiagnosticList(
         r, *n, FieldDiagnosticNames(),
         [&](const toml::node& e, const std::string& d) {
+          if ((d == "gauss" || d == "gauss_textbook") && !s.Gauge())
+            r.Fail(e,
+                   "diagnostic " + Quote(d) +
+                       " is Gauss's law of a gauge field (A₀'s equation)",
+                   "expected a 'maxwell' term, or no " + Quote(d));
+          if (d == "momentum" && s.Gauge())
+            r.Fail(e,
+                   "diagnostic 'momentum' is the canonical momentum of the "
+                   "potentials, which is not gauge invariant",
+                   "expected energy, error, gauss or gauss_textbook");
           if (d == "charge" && s.components != 2)
             r.Fail(e,
                    "diagnostic 'charge' is the U(1) charge of two components",

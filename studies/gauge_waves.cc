@@ -80,44 +80,11 @@ MaxwellPlaneWave::Error MaxwellPlaneWave::Errors(std::span<const double> phi,
   return r;
 }
 
-namespace {
-
-// The derivative matrix of the trigonometric interpolant on n periodic
-// points of spacing h: ½(−1)^(i−l) cot((i−l)π/n) for even n, csc for odd,
-// times 2π/(n h).
-std::vector<double> SpectralDerivative(int n, double h) {
-  std::vector<double> m(std::size_t(n) * n, 0.0);
-  const double scale = 2 * kPi / (n * h);
-  for (int i = 0; i < n; ++i)
-    for (int l = 0; l < n; ++l) {
-      if (i == l) continue;
-      const double x = (i - l) * kPi / n, sign = (i - l) % 2 ? -1.0 : 1.0;
-      m[i * n + l] =
-          scale * 0.5 * sign * (n % 2 == 0 ? 1 / std::tan(x) : 1 / std::sin(x));
-    }
-  return m;
-}
-
-}  // namespace
-
 double TextbookGauss(const Grid& g, std::span<const double> phi,
                      std::span<const double> phi_t) {
-  const MaxwellFields f = FieldsOf(g, phi, phi_t);
-  const int n0 = g.points(0), n1 = g.points(1);
-  const auto d0 = SpectralDerivative(n0, g.axis(0).dx());
-  const auto d1 = SpectralDerivative(n1, g.axis(1).dx());
-  double worst = 0, terms = 0;
-  for (int j1 = 0; j1 < n1; ++j1)
-    for (int j0 = 0; j0 < n0; ++j0) {
-      double div0 = 0, div1 = 0;
-      for (int l = 0; l < n0; ++l)
-        div0 += d0[j0 * n0 + l] * f.e[(j1 * n0 + l) * 2];
-      for (int l = 0; l < n1; ++l)
-        div1 += d1[j1 * n1 + l] * f.e[(l * n0 + j0) * 2 + 1];
-      worst = std::max(worst, std::abs(div0 + div1));
-      terms = std::max(terms, std::abs(div0) + std::abs(div1));
-    }
-  return terms > 0 ? worst / terms : worst;
+  return action::TextbookConstraintsOfSlice(fields::MaxwellIn<2>{}, g, phi,
+                                            phi_t)
+      .relative();
 }
 
 GaussRun RunGauss(const std::string& op, int window, double fraction, int n,

@@ -49,9 +49,9 @@ class MaxwellPlaneWave {
 };
 
 // The textbook Gauss law ∇·E of a slice with the exact derivative of the
-// grid's trigonometric interpolant, relative to the largest Σ_b |∂_bE_b|
-// (the terms that cancel): what the action's law (the stencil's D·E)
-// becomes as Δx → 0.
+// grid's trigonometric interpolant, relative to the largest |∂_bE_b|
+// summed over the axes (core/action/field_constraints.h): what the
+// action's law (the stencil's D·E) becomes as Δx → 0.
 double TextbookGauss(const sbp::SpaceGrid<double>& grid,
                      std::span<const double> phi,
                      std::span<const double> phi_t);

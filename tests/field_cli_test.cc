@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 
-#include "tests/cli_run.h"
+#include "tests/scene_cli.h"
 
 namespace fs = std::filesystem;
 
@@ -23,25 +23,11 @@ namespace {
 
 using Run = vivp::testing::CliRun;
 using vivp::testing::Lines;
+using vivp::testing::Refused;
 using vivp::testing::Slurp;
 
-struct Scratch : vivp::testing::ScratchDirectory {
-  Scratch() : ScratchDirectory("vivp_field_cli_") {}
-  // Writes `text` to NAME.toml and runs it into NAME.out.
-  Run RunScene(const std::string& name, const std::string& text,
-               const std::string& flags = "") const {
-    std::ofstream(dir / (name + ".toml")) << text;
-    return vivp::testing::RunVivp(
-        "run --quiet " + (dir / (name + ".toml")).string() + " --out " +
-        (dir / (name + ".out")).string() + flags);
-  }
-  // Nothing of a refused run: no output directory, no staging directory.
-  bool Clean(const std::string& name) const {
-    for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().filename().string().find("partial") != std::string::npos)
-        return false;
-    return !fs::exists(dir / (name + ".out"));
-  }
+struct Scratch : vivp::testing::SceneScratch {
+  Scratch() : SceneScratch("vivp_field_cli_") {}
 };
 
 // Klein–Gordon (m = 1) on [0, L) periodic, 32 points, SBP42 to t = 1.
@@ -58,15 +44,6 @@ std::string KleinGordon(
          "[method]\noperator = \"sbp42\"\nwindow_points = 9\n"
          "[output]\ndiagnostics = [\"energy\", \"error\"]\n" +
          output;
-}
-
-// A refusal: exit 2, one line on stderr that contains every piece.
-void Refused(const Run& r, const std::vector<std::string>& pieces) {
-  BOOST_TEST(r.status == 2, r.err);
-  BOOST_TEST(Lines(r.err) == 1, r.err);
-  for (const auto& p : pieces)
-    BOOST_TEST(r.err.find(p) != std::string::npos,
-               "'" << p << "' in " << r.err);
 }
 
 nlohmann::json Converge(const std::string& args) {

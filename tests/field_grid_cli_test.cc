@@ -15,7 +15,7 @@
 #include <string>
 #include <tuple>
 
-#include "tests/cli_run.h"
+#include "tests/scene_cli.h"
 
 namespace fs = std::filesystem;
 
@@ -23,23 +23,11 @@ namespace {
 
 using Run = vivp::testing::CliRun;
 using vivp::testing::Lines;
+using vivp::testing::Refused;
 using vivp::testing::Slurp;
 
-struct Scratch : vivp::testing::ScratchDirectory {
-  Scratch() : ScratchDirectory("vivp_field_grid_cli_") {}
-  Run RunScene(const std::string& name, const std::string& text,
-               const std::string& flags = "") const {
-    std::ofstream(dir / (name + ".toml")) << text;
-    return vivp::testing::RunVivp(
-        "run --quiet " + (dir / (name + ".toml")).string() + " --out " +
-        (dir / (name + ".out")).string() + flags);
-  }
-  bool Clean(const std::string& name) const {
-    for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().filename().string().find("partial") != std::string::npos)
-        return false;
-    return !fs::exists(dir / (name + ".out"));
-  }
+struct Scratch : vivp::testing::SceneScratch {
+  Scratch() : SceneScratch("vivp_field_grid_cli_") {}
 };
 
 // Klein–Gordon (m = 1) on the periodic square [0, 2π)², a plane wave along
@@ -58,14 +46,6 @@ std::string Plane(const std::string& field = "points = [16, 16]\n",
          "window_points = 9\n[output]\n"
          "diagnostics = [\"energy\", \"momentum\", \"error\"]\n" +
          output;
-}
-
-void Refused(const Run& r, const std::vector<std::string>& pieces) {
-  BOOST_TEST(r.status == 2, r.err);
-  BOOST_TEST(Lines(r.err) == 1, r.err);
-  for (const auto& p : pieces)
-    BOOST_TEST(r.err.find(p) != std::string::npos,
-               "'" << p << "' in " << r.err);
 }
 
 }  // namespace

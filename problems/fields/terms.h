@@ -19,6 +19,7 @@
 //   sine_gordon   L −= 1 − cos φ              (one component)
 //   phi4          L −= ¼λ(|φ|² − v²)²
 //   quartic       L −= ¼λ|φ|⁴
+//   maxwell       L += ½|E|² − ½|F|²          (the potentials; alone)
 //
 // kinetic + gradient + mass is Klein–Gordon, + sine_gordon sine-Gordon,
 // + phi4 the φ⁴ theory, and with two components kinetic + gradient + mass +
@@ -31,6 +32,7 @@
 
 #include "problems/effect_parameters.h"
 #include "problems/fields/densities.h"
+#include "problems/fields/gauge.h"
 
 namespace vivp::fields {
 
@@ -129,12 +131,33 @@ struct Quartic {
   }
 };
 
+// Electromagnetism, −¼F_μνF^μν (gauge.h): the field's components are the
+// potentials (A₀, A₁ … A_d), and the term stands alone (a scene with it is
+// solved as fields::MaxwellIn<d>, whose A₀ has no time derivative; charged
+// matter is not built yet).
+struct Maxwell {
+  static EffectSpec<Maxwell> Spec() {
+    return {"maxwell",
+            "L += ½|E|² − ½|F|², E = −∇A₀ − ∂_tA  (components A₀ … A_d, alone)",
+            {},
+            /*kinetic=*/true};
+  }
+  template <int M, int d, class T>
+  T Density(const T* phi, const T* phi_t, const T* phi_x) const {
+    if constexpr (M == d + 1)
+      return MaxwellIn<d>{}(phi, phi_t, phi_x);
+    else
+      return T(0.0);  // the reader refuses other component counts
+  }
+};
+
 }  // namespace terms
 
 // Every term a field scene may list; a new term is its struct above and its
 // name here.
 using FieldTerm = std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
-                               terms::SineGordon, terms::Phi4, terms::Quartic>;
+                               terms::SineGordon, terms::Phi4, terms::Quartic,
+                               terms::Maxwell>;
 
 template <int M, int d = 1>
 struct ComposedDensity {

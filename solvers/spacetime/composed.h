@@ -1,7 +1,8 @@
 // The field solver for the composed densities of a field scene
 // (problems/fields/terms.h), compiled once in this library for one and two
 // components on one axis (composed_1.cc, composed_2.cc) and on grids of two
-// and three axes (composed_grid2.cc, composed_grid3.cc): the scene runner and
+// and three axes (composed_grid2.cc, composed_grid3.cc), and electromagnetism
+// on grids (composed_gauge.cc): the scene runner and
 // the named field problems of studies/ call it without instantiating the
 // solver again.
 #pragma once
@@ -11,6 +12,7 @@
 
 #include "core/sbp/builder.h"
 #include "core/sbp/space.h"
+#include "problems/fields/gauge.h"
 #include "problems/fields/terms.h"
 #include "solvers/spacetime/solve.h"
 #include "solvers/spacetime/window_solver.h"
@@ -27,7 +29,8 @@ namespace vivp::spacetime {
 inline long long MaxSolvedAtOnce(
     const std::string& op,
     WindowLinearSolver linear = WindowLinearSolver::kModes) {
-  if (linear == WindowLinearSolver::kModes) {
+  // The Fourier solve's factors are bounded apart (kFourierBytes).
+  if (linear != WindowLinearSolver::kSparseLu) {
     sbp::Table(op);  // an unknown operator is an error here too
     return 1LL << 23;
   }
@@ -46,11 +49,19 @@ inline long long MaxSolvedAtOnce(
       const FieldGrid&, std::vector<double>, std::vector<double>,          \
       const FieldSolveOptions&)
 
+#define VIVP_FIELD_SOLVE_GAUGE(D)                                 \
+  template FieldSolution SolveField<fields::MaxwellIn<D>>(        \
+      const fields::MaxwellIn<D>&, const sbp::SpaceGrid<double>&, \
+      const FieldGrid&, std::vector<double>, std::vector<double>, \
+      const FieldSolveOptions&)
+
 extern VIVP_FIELD_SOLVE(1);
 extern VIVP_FIELD_SOLVE(2);
 extern VIVP_FIELD_SOLVE_GRID(1, 2);
 extern VIVP_FIELD_SOLVE_GRID(2, 2);
 extern VIVP_FIELD_SOLVE_GRID(1, 3);
 extern VIVP_FIELD_SOLVE_GRID(2, 3);
+extern VIVP_FIELD_SOLVE_GAUGE(2);
+extern VIVP_FIELD_SOLVE_GAUGE(3);
 
 }  // namespace vivp::spacetime

@@ -40,6 +40,17 @@ namespace vivp::spacetime {
 // the only one for gauge fields (a Jacobian singular along the gauge).
 enum class WindowLinearSolver { kModes, kSparseLu, kFourier };
 
+// By name ("modes", "sparse-lu", "fourier"); anything else is kModes.
+inline WindowLinearSolver WindowLinearSolverNamed(std::string_view name) {
+  return name == "sparse-lu" ? WindowLinearSolver::kSparseLu
+         : name == "fourier" ? WindowLinearSolver::kFourier
+                             : WindowLinearSolver::kModes;
+}
+
+// The factors a Fourier window solve may hold (2 GiB; a scene over it is
+// refused before solving).
+inline constexpr double kFourierBytes = 2.0 * (1 << 30);
+
 inline std::string_view WindowLinearSolverName(WindowLinearSolver s) {
   return s == WindowLinearSolver::kModes      ? "modes"
          : s == WindowLinearSolver::kSparseLu ? "sparse-lu"
