@@ -7,7 +7,10 @@
 //      resolution limit down to 1/16 of it; beside it the same law at the
 //      corrected end state the march hands on, and E's error at t = 4;
 //   2. the textbook law ∇·E with the exact derivative against Δx (orders 4
-//      and 8 in space): the stencil's error, with its fitted order.
+//      and 8 in space): the stencil's error, with its fitted order;
+//   3. one window solved by Newton with the Fourier window solve and by
+//      Ceres Levenberg–Marquardt from the same start: iterations, time,
+//      Gauss's law, and the gauge each one picks.
 //
 // Usage: gauge_bench [--markdown] [--quick]
 //   --quick   SBP42 and windows of 16 only
@@ -41,21 +44,8 @@ void Row(const vivp::studies::GaussRun& r, bool markdown) {
         r.windows, r.gauss, r.handoff, r.textbook, r.error_e, r.seconds);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  bool markdown = false, quick = false;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--markdown")) {
-      markdown = true;
-    } else if (!std::strcmp(argv[i], "--quick")) {
-      quick = true;
-    } else {
-      std::fprintf(stderr, "usage: gauge_bench [--markdown] [--quick]\n");
-      return 2;
-    }
-  }
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+// Table 1: the action's Gauss law over operators, windows and steps.
+void GaussTable(bool markdown, bool quick) {
   const double t_end = 4;
   std::printf(
       "The action's Gauss law, max over every slice, relative to its terms "
@@ -88,7 +78,10 @@ int main(int argc, char** argv) {
       }
   std::printf("\nlargest: %.1e%s\n", worst,
               failed ? " (some configurations did not run)" : "");
+}
 
+// Table 2: the textbook law against Δx, with its fitted order.
+void TextbookTable() {
   std::printf(
       "\nThe textbook law ∇·E (exact derivative) against Δx, SBP42, "
       "windows of 16, Δt at 1/4 of the limit:\n\n");
@@ -105,5 +98,60 @@ int main(int argc, char** argv) {
     std::printf("order %d: fitted order in Δx %.2f\n\n", order,
                 vivp::linalg::FitPowerLaw(h, e).order);
   }
+}
+
+// Table 3: one window by the Fourier solve and by Ceres LM.
+void SolverTable(bool markdown) {
+  std::printf(
+      "\nOne window from the same start (A₀ = 0, A(0) + t∂_tA(0)): Newton "
+      "with the Fourier window solve against Ceres Levenberg–Marquardt "
+      "(order 2 in space):\n\n");
+  if (markdown)
+    std::printf(
+        "| time | window | grid | unknowns | solver | iterations | seconds | "
+        "residual | Gauss | correction |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const std::string op : {"sbp21", "sbp42"})
+    for (const auto& [w, n] : {std::pair{8, 6}, {12, 6}, {8, 8}}) {
+      const auto c = vivp::studies::CompareWindowSolves(op, w, n);
+      for (const auto* side : {&c.fourier, &c.lm}) {
+        const char* name = side == &c.fourier ? "fourier" : "ceres-lm";
+        if (markdown)
+          std::printf(
+              "| %s | %d | %d² | %d | %s | %d | %.3f | %.1e | %.1e | %.2e |\n",
+              op.c_str(), w, n, c.unknowns, name, side->iterations,
+              side->seconds, side->residual, side->gauss, side->correction);
+        else
+          std::printf(
+              "%-6s W=%-3d %2d² %6d %-9s %4d it %8.3f s  residual %.1e  "
+              "gauss %.1e  correction %.2e%s%s\n",
+              op.c_str(), w, n, c.unknowns, name, side->iterations,
+              side->seconds, side->residual, side->gauss, side->correction,
+              side->converged ? "" : "  not converged: ",
+              side->converged ? "" : side->message.c_str());
+      }
+      std::printf("  E differs by %.1e relative, A₀ by %.1e\n", c.e_difference,
+                  c.a0_difference);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool markdown = false, quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--markdown")) {
+      markdown = true;
+    } else if (!std::strcmp(argv[i], "--quick")) {
+      quick = true;
+    } else {
+      std::fprintf(stderr, "usage: gauge_bench [--markdown] [--quick]\n");
+      return 2;
+    }
+  }
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  GaussTable(markdown, quick);
+  TextbookTable();
+  SolverTable(markdown);
   return 0;
 }

@@ -7,8 +7,14 @@
 #include <stdexcept>
 
 #include "core/action/field_constraints.h"
+#include "core/action/field_system.h"
+#include "core/sbp/builder.h"
+#include "core/sbp/regularized.h"
 #include "problems/fields/gauge.h"
+#include "solvers/spacetime/ceres_window.h"
+#include "solvers/spacetime/fourier_solver.h"
 #include "solvers/spacetime/resolution.h"
+#include "solvers/variational/newton.h"
 #include "solvers/variational/resolution.h"
 
 namespace vivp::studies {
@@ -139,6 +145,98 @@ GaussRun RunGauss(const std::string& op, int window, double fraction, int n,
           .relative();
   r.error_e = wave.Errors(s.end.phi, s.end.phi_t, t_end).e;
   return r;
+}
+
+namespace {
+
+// max over the window's nodes of the action's Gauss law, relative, and E.
+struct WindowFields {
+  double gauss = 0;
+  std::vector<double> e, a0;
+};
+template <class System>
+WindowFields FieldsOfWindow(const System& sys, const Grid& g,
+                            const std::vector<double>& y) {
+  action::FieldValues<double> v;
+  sys.Fields(y.data(), v);
+  WindowFields w;
+  const std::size_t size = std::size_t(g.points()) * 3;
+  for (int i = 0; i < sys.time_points(); ++i) {
+    const std::span<const double> phi(&v.phi[i * size], size),
+        phi_t(&v.phi_t[i * size], size);
+    w.gauss = std::max(w.gauss, action::ConstraintsOfSlice(
+                                    fields::MaxwellIn<2>{}, g, phi, phi_t)
+                                    .relative());
+    const auto f = FieldsOf(g, phi, phi_t);
+    w.e.insert(w.e.end(), f.e.begin(), f.e.end());
+    for (std::size_t j = 0; j < size; j += 3) w.a0.push_back(phi[j]);
+  }
+  return w;
+}
+
+double MaxAbsDifference(const std::vector<double>& a,
+                        const std::vector<double>& b) {
+  double d = 0;
+  for (std::size_t k = 0; k < a.size(); ++k)
+    d = std::max(d, std::abs(a[k] - b[k]));
+  return d;
+}
+
+}  // namespace
+
+WindowSolveComparison CompareWindowSolves(const std::string& op, int window,
+                                          int n) {
+  using Density = fields::MaxwellIn<2>;
+  const Grid g({sbp::SpaceDerivative<double>::Periodic(2, n, 0.0, 2 * kPi),
+                sbp::SpaceDerivative<double>::Periodic(2, n, 0.0, 2 * kPi)});
+  const MaxwellPlaneWave wave(g, 1, 2);
+  const auto data = wave.At(0);
+  const double t_end = 0.2 * (window - 1) / 15.0;
+  const sbp::RegularizedOperator<double> dbar(
+      sbp::MakeOperator<double>(op, window, 0.0, t_end));
+  const Density density;
+  const action::FieldSystem<Density> sys(density, dbar, g, data.phi,
+                                         data.phi_t);
+  WindowSolveComparison c;
+  c.unknowns = sys.size();
+  std::vector<double> start(sys.size(), 0.0);
+  for (int i = 0; i < window; ++i)
+    for (int j = 0; j < g.points(); ++j)
+      for (int a = 1; a < 3; ++a)
+        start[sys.Phi(i, j, a)] =
+            data.phi[j * 3 + a] + dbar.base().t(i) * data.phi_t[j * 3 + a];
+  auto finish = [&](WindowSolveComparison::Side& side,
+                    const variational::NewtonReport& r,
+                    const std::vector<double>& y, double seconds) {
+    side.iterations = r.corrections;
+    side.seconds = seconds;
+    side.converged = r.converged;
+    side.message = r.reason;
+    std::vector<double> f(sys.size());
+    sys.Residual(y.data(), f.data());
+    for (double v : f) side.residual = std::max(side.residual, std::abs(v));
+    side.correction = MaxAbsDifference(y, start);
+  };
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> yf = start, yl = start;
+  auto t0 = Clock::now();
+  spacetime::FourierSolver<Density> fourier(density);
+  const auto rf = variational::Newton<double>(sys, yf, {}, fourier);
+  finish(c.fourier, rf, yf,
+         std::chrono::duration<double>(Clock::now() - t0).count());
+  t0 = Clock::now();
+  const auto rl = spacetime::SolveWindowCeres(sys, yl);
+  finish(c.lm, rl, yl,
+         std::chrono::duration<double>(Clock::now() - t0).count());
+  const auto wf = FieldsOfWindow(sys, g, yf), wl = FieldsOfWindow(sys, g, yl);
+  c.fourier.gauss = wf.gauss;
+  c.lm.gauss = wl.gauss;
+  double emax = 0, amax = 0;
+  for (double e : wf.e) emax = std::max(emax, std::abs(e));
+  for (double a : data.phi) amax = std::max(amax, std::abs(a));
+  c.e_difference = MaxAbsDifference(wf.e, wl.e) / emax;
+  c.a0_difference = MaxAbsDifference(wf.a0, wl.a0) / amax;
+  return c;
 }
 
 }  // namespace vivp::studies

@@ -74,4 +74,25 @@ struct GaussRun {
 GaussRun RunGauss(const std::string& op, int window, double fraction, int n,
                   int space_order, double t_end);
 
+// One window of the wave above (k = (1, 2), n², order 2 in space, SBP `op`
+// with `window` points to t = 0.2·(window − 1)/15), solved from the same
+// start (A₀ = 0, A = A(0) + t ∂_tA(0), multipliers 0) by Newton with the
+// Fourier window solve and by Ceres Levenberg–Marquardt: their cost, the
+// action's Gauss law, how far apart their gauge-invariant E and their
+// potentials are, and the size of each one's correction from the start
+// (the Fourier solve's is the minimum-norm one).
+struct WindowSolveComparison {
+  struct Side {
+    int iterations = 0;
+    double seconds = 0, residual = 0, gauss = 0, correction = 0;
+    bool converged = false;
+    std::string message;
+  } fourier, lm;
+  double e_difference = 0;   // max |E_F − E_LM| / max |E_F|
+  double a0_difference = 0;  // max |A₀_F − A₀_LM| / max |A|
+  int unknowns = 0;
+};
+WindowSolveComparison CompareWindowSolves(const std::string& op, int window,
+                                          int n);
+
 }  // namespace vivp::studies

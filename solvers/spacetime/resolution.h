@@ -129,9 +129,11 @@ double FastestFieldFrequency(const Density& density,
     } else {
       // A component without a time derivative (A₀) is a constraint, not an
       // oscillator: the frequencies are those of the others.
-      auto block = [&](int r, int col) {
-        return Eigen::MatrixXd(h.hessian.template block<m, m>(r, col))(dynamic,
-                                                                       dynamic);
+      // (Returned as a matrix: an indexed view of the temporary block
+      // would outlive it.)
+      auto block = [&](int r, int col) -> Eigen::MatrixXd {
+        const Eigen::MatrixXd full = h.hessian.template block<m, m>(r, col);
+        return full(dynamic, dynamic);
       };
       mass = block(m, m);
       k = -block(0, 0);
