@@ -147,6 +147,54 @@ GaussRun RunGauss(const std::string& op, int window, double fraction, int n,
   return r;
 }
 
+std::vector<GaugeDriftRow> GaugeDrift(const std::string& op, int window,
+                                      const std::vector<double>& times) {
+  const int n = 16;
+  const Grid g({sbp::SpaceDerivative<double>::Periodic(8, n, 0.0, 2 * kPi),
+                sbp::SpaceDerivative<double>::Periodic(8, n, 0.0, 2 * kPi)});
+  const MaxwellPlaneWave wave(g, 1, 2);
+  const auto data = wave.At(0);
+  const double t_end = times.back();
+  const double dt =
+      0.25 * variational::StabilityLimit(op) / spacetime::SpectralRadius(g);
+  spacetime::FieldSolveOptions o;
+  o.linear = spacetime::WindowLinearSolver::kFourier;
+  const spacetime::FieldGrid grid{
+      .op = op,
+      .points = (long long)std::ceil(t_end / dt) + 1,
+      .t_end = t_end,
+      .window_points = window};
+  const fields::MaxwellIn<2> density;
+  const auto s =
+      spacetime::SolveField(density, g, grid, data.phi, data.phi_t, o);
+  std::vector<GaugeDriftRow> rows;
+  if (!s.status.converged) return rows;
+  const std::size_t size = std::size_t(g.points()) * 3;
+  std::vector<double> grad(size * 2);
+  Grid::GradientWork<double> w;
+  GaugeDriftRow r;
+  std::size_t next = 0;
+  for (std::size_t k = 0; k < s.t.size() && next < times.size(); ++k) {
+    const std::span<const double> phi(&s.phi[k * size], size),
+        phi_t(&s.phi_t[k * size], size);
+    g.Gradient<double>(3, phi, grad, w);
+    for (int j = 0; j < g.points(); ++j) {
+      r.a0 = std::max(r.a0, std::abs(phi[j * 3]));
+      r.divergence =
+          std::max(r.divergence,
+                   std::abs(grad[(j * 2) * 3 + 1] + grad[(j * 2 + 1) * 3 + 2]));
+    }
+    r.gauss = std::max(
+        r.gauss, action::ConstraintsOfSlice(density, g, phi, phi_t).relative());
+    if (s.t[k] >= times[next] - 1e-12 || k + 1 == s.t.size()) {
+      r.t = s.t[k];
+      rows.push_back(r);
+      ++next;
+    }
+  }
+  return rows;
+}
+
 namespace {
 
 // max over the window's nodes of the action's Gauss law, relative, and E.

@@ -74,6 +74,16 @@ struct GaussRun {
 GaussRun RunGauss(const std::string& op, int window, double fraction, int n,
                   int space_order, double t_end);
 
+// How the gauge moves in a long march of the wave (16², order 8, `op` in
+// windows of `window` at 1/4 of the limit): the largest |A₀| and |D·A|
+// (both 0 in the data, and in no observable) over the slices up to each of
+// `times`, and the action's Gauss law there.
+struct GaugeDriftRow {
+  double t = 0, a0 = 0, divergence = 0, gauss = 0;
+};
+std::vector<GaugeDriftRow> GaugeDrift(const std::string& op, int window,
+                                      const std::vector<double>& times);
+
 // One window of the wave above (k = (1, 2), n², order 2 in space, SBP `op`
 // with `window` points to t = 0.2·(window − 1)/15), solved from the same
 // start (A₀ = 0, A = A(0) + t ∂_tA(0), multipliers 0) by Newton with the

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/action/field_constraints.h"
 #include "core/action/field_system.h"
 #include "core/sbp/builder.h"
 #include "core/sbp/regularized.h"
@@ -133,7 +134,16 @@ class FieldWindow {
       r = predictor_->Run(t0, x0, v0, tau, points, tol_abs, tol_rel, px, pv);
     } else {
       // No independent integration: the Newton start φ₀ + τπ₀, and no
-      // bound (the checks then pass; FieldSolution says so).
+      // bound (the checks then pass; FieldSolution says so). A gauge
+      // field's start is in the gauge A₀ = 0 (end_state.h).
+      if constexpr (kConstraints != 0u) {
+        gauge_x_.assign(x0, x0 + n_);
+        gauge_v_.assign(v0, v0 + n_);
+        ToTemporalGauge(density_, grid_, std::span<double>(gauge_x_),
+                        std::span<double>(gauge_v_));
+        x0 = gauge_x_.data();
+        v0 = gauge_v_.data();
+      }
       detail::TaylorStart(x0, v0, nullptr, tau, points, n_, px, pv);
       r.error_x = r.error_v = std::numeric_limits<double>::infinity();
     }
@@ -196,6 +206,8 @@ class FieldWindow {
     if (!detail::AccountNewton(r, a, timings_, residual_)) return false;
     lap = Clock::now();
     sys.Fields(y_.data(), values_);
+    if constexpr (kConstraints != 0u)
+      if (!ConstraintsHold(a, points)) return false;
     const auto& D = time_.dbar->base();
     const int last = points - 1;
     // x_N and (D φ)_N with the plain operator, as the connection rows.
@@ -299,6 +311,34 @@ class FieldWindow {
   std::pair<double, double> last_estimates() const { return last_estimates_; }
 
  private:
+  // The a-posteriori check of a field with constraint components: their
+  // equations (Gauss's law of the action) at every node of the solved
+  // window, relative to their terms (core/action/field_constraints.h).
+  // Measured at round-off (≤ 6e-15, docs/gauge.md §6); a solve whose
+  // potentials grew until round-off swamped E fails here, though Newton's
+  // residual, relative to the potentials, looked converged.
+  static constexpr double kConstraintTolerance = 1e-10;
+  bool ConstraintsHold(variational::detail::WindowAttempt& a, int points) {
+    double worst = 0;
+    for (int i = 0; i < points; ++i) {
+      const std::span<const double> phi(&values_.phi[std::size_t(i) * n_],
+                                        std::size_t(n_)),
+          phi_t(&values_.phi_t[std::size_t(i) * n_], std::size_t(n_));
+      const double r =
+          action::ConstraintsOfSlice(density_, grid_, phi, phi_t).relative();
+      worst = std::isnan(r) ? r : std::max(worst, r);
+      if (std::isnan(worst)) break;
+    }
+    if (worst <= kConstraintTolerance) return true;
+    a.failure = variational::detail::WindowFailure::kCheck;
+    a.why =
+        "the constraint of a component without a time derivative "
+        "(Gauss's law of the action) holds only to " +
+        variational::detail::ShortNumber(worst) +
+        " relative in the window: the solve lost it to round-off";
+    return false;
+  }
+
   static double Since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   }
@@ -319,6 +359,7 @@ class FieldWindow {
   detail::WindowOperator time_;
   std::unique_ptr<System> system_;  // of the last solve (refers to time_)
   std::vector<double> y_, momentum_, column_, last_phi_;
+  std::vector<double> gauge_x_, gauge_v_;  // a gauge field's start
   action::FieldValues<double> values_;
   detail::WindowResolution resolution_;
   double residual_ = 0;
