@@ -10,9 +10,13 @@
 #include <cmath>
 #include <random>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/action/field_charges.h"
+#include "core/action/field_system.h"
+#include "core/sbp/builder.h"
+#include "core/sbp/regularized.h"
 #include "problems/fields/gauge.h"
 #include "solvers/spacetime/assembly.h"
 #include "solvers/spacetime/solve.h"
@@ -28,6 +32,27 @@ Eigen::MatrixXd DenseJacobian(const System& sys, const std::vector<double>& y) {
 }
 
 using Grid = vivp::sbp::SpaceGrid<double>;
+
+// One window of electromagnetism in d + 1 D on `g`: `op` with nt points
+// (Δt = 0.1), every potential and velocity of the data `data`, every
+// unknown `unknown`, and its Jacobian there as a dense matrix.
+template <int d>
+struct MaxwellWindow {
+  using Density = vivp::fields::MaxwellIn<d>;
+  static constexpr int m = d + 1;
+  vivp::sbp::RegularizedOperator<double> dbar;
+  Density density;
+  vivp::action::FieldSystem<Density> sys;
+  std::vector<double> y;
+  Eigen::MatrixXd J;
+  MaxwellWindow(const std::string& op, const Grid& g, int nt, double data,
+                double velocity, double unknown)
+      : dbar(vivp::sbp::MakeOperator<double>(op, nt, 0.0, 0.1 * (nt - 1))),
+        sys(density, dbar, g, std::vector<double>(g.points() * m, data),
+            std::vector<double>(g.points() * m, velocity)),
+        y(sys.size(), unknown),
+        J(DenseJacobian(sys, y)) {}
+};
 
 using Slices = vivp::studies::MaxwellSlice;
 using Fields = vivp::studies::MaxwellFields;

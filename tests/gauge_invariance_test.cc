@@ -185,17 +185,11 @@ struct NullSpace {
 
 template <int d>
 NullSpace<d> Measure(const std::string& op, const Grid& g, int nt) {
-  using Density = vivp::fields::MaxwellIn<d>;
   constexpr int m = d + 1;
   const int n = g.points();
-  const vivp::sbp::RegularizedOperator<double> dbar(
-      vivp::sbp::MakeOperator<double>(op, nt, 0.0, 0.1 * (nt - 1)));
-  const Density density;
-  vivp::action::FieldSystem<Density> sys(density, dbar, g,
-                                         std::vector<double>(n * m, 0.1),
-                                         std::vector<double>(n * m, 0.2));
-  std::vector<double> y(sys.size(), 0.3);
-  const Eigen::MatrixXd J = gauge_test::DenseJacobian(sys, y);
+  const gauge_test::MaxwellWindow<d> w(op, g, nt, 0.1, 0.2, 0.3);
+  const auto& sys = w.sys;
+  const Eigen::MatrixXd& J = w.J;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
   const auto& s = svd.singularValues();
   NullSpace<d> r;
@@ -219,7 +213,7 @@ NullSpace<d> Measure(const std::string& op, const Grid& g, int nt) {
   for (int k = 0; k < gs.size(); ++k) r.kappa += gs[k] <= 1e-10 * gs[0];
   // E_b = −D_b A_0 − D̄ A_b and F_bc = D_b A_c − D_c A_b along each null
   // vector (the data fixed: D̄'s matrix part).
-  const auto& D = dbar.base();
+  const auto& D = w.dbar.base();
   const Eigen::MatrixXd V = svd.matrixV().rightCols(r.dimension);
   std::vector<double> col(nt), dcol(nt), slice(n);
   std::vector<std::vector<double>> grads(m * d, std::vector<double>(n));
@@ -234,7 +228,7 @@ NullSpace<d> Measure(const std::string& op, const Grid& g, int nt) {
         for (int b = 0; b < d; ++b) {
           for (int k = 0; k < nt; ++k) col[k] = V(sys.Phi(k, j, 1 + b), v);
           D.Apply(std::span<const double>(col), std::span<double>(dcol));
-          dcol[0] += dbar.penalty() * col[0];
+          dcol[0] += w.dbar.penalty() * col[0];
           r.field = std::max(r.field, std::abs(-grads[b][j] - dcol[i]));
           for (int c = b + 1; c < d; ++c)
             r.field = std::max(r.field, std::abs(grads[(1 + c) * d + b][j] -

@@ -39,22 +39,17 @@ template <int d>
 void CompareWithDense(const std::string& op, const Grid& g, int nt,
                       int expected_nullity) {
   using Density = vivp::fields::MaxwellIn<d>;
-  constexpr int m = d + 1;
+  const gauge_test::MaxwellWindow<d> w(op, g, nt, 0.0, 0.0, 0.0);
+  const auto& sys = w.sys;
+  const auto& y = w.y;
+  const Eigen::MatrixXd& J = w.J;
   const int n = g.points();
-  const vivp::sbp::RegularizedOperator<double> dbar(
-      vivp::sbp::MakeOperator<double>(op, nt, 0.0, 0.1 * (nt - 1)));
-  const Density density;
-  vivp::action::FieldSystem<Density> sys(density, dbar, g,
-                                         std::vector<double>(n * m, 0.0),
-                                         std::vector<double>(n * m, 0.0));
-  std::vector<double> y(sys.size(), 0.0);
-  const Eigen::MatrixXd J = gauge_test::DenseJacobian(sys, y);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::VectorXd x(sys.size());
   for (auto& v : x) v = u(rng);
   const Eigen::VectorXd b = J * x;
-  vivp::spacetime::FourierSolver<Density> fourier(density);
+  vivp::spacetime::FourierSolver<Density> fourier(w.density);
   fourier.Prepare(sys, y.data());
   Eigen::VectorXd z = b;
   fourier.Solve(z.data());

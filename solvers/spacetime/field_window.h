@@ -92,7 +92,7 @@ class FieldWindow {
         rho_(SpectralRadius(grid)),
         modes_(density, options.sparse),
         sparse_(options.sparse) {
-    CheckLinearSolver<Density>(grid, options.linear, options.boundary);
+    // (SolveField checked the linear solver against the field and grid.)
     if (options.linear == WindowLinearSolver::kFourier)
       fourier_.emplace(density);
     if (kConstraints != 0u) {
