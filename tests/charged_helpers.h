@@ -40,9 +40,11 @@ Moved Gauge(const System& s, const std::vector<double>& y,
   Moved out{y, s.phi0(), s.pi0()};
   for (int j = 0; j < nx; ++j) {
     for (int i = 0; i < nt; ++i) {
-      Rotate(out.y, s.Phi(i, j, System::kRe), s.Phi(i, j, System::kIm), at(i, j));
+      Rotate(out.y, s.Phi(i, j, System::kRe), s.Phi(i, j, System::kIm),
+             at(i, j));
       for (int b = 0; b < d; ++b)
-        out.y[s.Phi(i, j, System::A(b))] += (at(i, s.Next(j, b)) - at(i, j)) / s.h(b);
+        out.y[s.Phi(i, j, System::A(b))] +=
+            (at(i, s.Next(j, b)) - at(i, j)) / s.h(b);
       out.y[s.Phi(i, j, System::kChi)] += at(i, j);
     }
     for (auto lambda : {&System::Lambda3, &System::Lambda4})

@@ -56,7 +56,7 @@ struct Case {
     phi0 = random(std::size_t(grid.points()) * m);
     pi0 = random(std::size_t(grid.points()) * m);
     const vivp::action::ChargedFieldSystem<Model, d> sys(model, dbar, grid,
-                                                          phi0, pi0);
+                                                         phi0, pi0);
     y = random(std::size_t(sys.size()));
   }
 };
@@ -88,7 +88,8 @@ Change Violation(const std::string& op, int nt, const Grid& g, double amp,
     diff = std::max(diff, std::abs(f1[k] - f0[k]));
     scale = std::max(scale, std::abs(f0[k]));
   }
-  const double s0 = before.Action(c.y.data()), s1 = after.Action(moved.y.data());
+  const double s0 = before.Action(c.y.data()),
+               s1 = after.Action(moved.y.data());
   return {std::abs(s1 - s0) / std::abs(s0), diff / scale};
 }
 
@@ -100,29 +101,29 @@ BOOST_AUTO_TEST_CASE(the_action_is_gauge_invariant_for_every_operator) {
     for (int nt : {16, 24}) {
       if (op == "sbp84" && nt < 16) continue;
       const Change one = Violation<1>(
-          op, nt, Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 9, 0, 3)),
-          1.0);
+          op, nt,
+          Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 9, 0, 3)), 1.0);
       const Change two = Violation<2>(
           op, nt,
           Grid({vivp::sbp::SpaceDerivative<double>::Periodic(2, 4, 0, 2),
                 vivp::sbp::SpaceDerivative<double>::Periodic(2, 5, 0, 2.5)}),
           1.0);
-      BOOST_TEST_MESSAGE(op << " Nt=" << nt << ": 1+1 D action "
-                            << one.action << " rows " << one.rows
-                            << "; 2+1 D action " << two.action << " rows "
-                            << two.rows);
+      BOOST_TEST_MESSAGE(op << " Nt=" << nt << ": 1+1 D action " << one.action
+                            << " rows " << one.rows << "; 2+1 D action "
+                            << two.action << " rows " << two.rows);
       worst_action = std::max({worst_action, one.action, two.action});
       worst_rows = std::max({worst_rows, one.rows, two.rows});
     }
-  BOOST_TEST_MESSAGE("largest relative change: action " << worst_action
-                                                        << ", rows " << worst_rows);
+  BOOST_TEST_MESSAGE("largest relative change: action "
+                     << worst_action << ", rows " << worst_rows);
   BOOST_TEST(worst_action < 1e-13);
   BOOST_TEST(worst_rows < 1e-12);
   const Change wrong = Violation<1>(
-      "sbp42", 16, Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 9, 0, 3)),
-      1.0, false);
-  BOOST_TEST_MESSAGE("control, χ's datum not moved: action " << wrong.action
-                                                             << ", rows " << wrong.rows);
+      "sbp42", 16,
+      Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 9, 0, 3)), 1.0,
+      false);
+  BOOST_TEST_MESSAGE("control, χ's datum not moved: action "
+                     << wrong.action << ", rows " << wrong.rows);
   BOOST_TEST(wrong.rows > 1e-3);
 }
 

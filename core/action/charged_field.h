@@ -86,6 +86,11 @@ class ChargedFieldSystem {
     return c + 1 < grid_.points(b) ? j + grid_.stride(b)
                                    : j - c * grid_.stride(b);
   }
+  int Previous(int j, int b) const {
+    const int c = grid_.Coordinate(j, b);
+    return c > 0 ? j - grid_.stride(b)
+                 : j + (grid_.points(b) - 1) * grid_.stride(b);
+  }
   double h(int b) const { return grid_.axis(b).dx(); }
   const sbp::RegularizedOperator<double>& time_operator() const { return dt_; }
   const sbp::SpaceGrid<double>& space_grid() const { return grid_; }
@@ -194,8 +199,7 @@ class ChargedFieldSystem {
       out.g[count + e] = -c / hb;
       out.g[2 * count + e] = c / hb;
     }
-    out.value =
-        TimeRow(y, i, j, A(b), true) - (A0(y, i, k) - A0(y, i, j)) / hb;
+    out.value = TimeRow(y, i, j, A(b), true) - (A0(y, i, k) - A0(y, i, j)) / hb;
   }
 
   // F_bc at node (i, j), b < c, as a linear form.
@@ -213,9 +217,22 @@ class ChargedFieldSystem {
     for (int e = 0; e < 4; ++e) out.value += out.g[e] * y[out.index[e]];
   }
 
+  // Which terms a residual holds: the matter's (|D_0φ|², |D_bφ|², V and
+  // φ's end connection) and the gauge field's (E², F² and A_b's).
+  static constexpr unsigned kMatter = 1u, kGauge = 2u, kAllTerms = 3u;
+
   void Residual(const double* y, double* f) const {
     std::fill(f, f + size(), 0.0);
     Accumulate<NoSink>(y, f, nullptr);
+  }
+  // The node rows of the chosen terms alone (the data rows left 0): the
+  // parts that cancel in Gauss's law (charged_observables.h).
+  void PartialResidual(const double* y, double* f, unsigned parts) const {
+    std::fill(f, f + size(), 0.0);
+    Visit(y, [&](const LocalReal& t, double w, unsigned part) {
+      if (part & parts) AddTerm<NoSink>(t, w, f, nullptr);
+    });
+    EndConnection<NoSink>(y, f, nullptr, nullptr, parts);
   }
   template <class Sink>
   void Jacobian(const double* y, Sink& sink) const {
@@ -227,7 +244,7 @@ class ChargedFieldSystem {
   // rows, its derivatives, are invariant, or rotate with φ.)
   double Action(const double* y) const {
     double s = 0;
-    Visit(y, [&](const LocalReal& t, double w) { s += w * t.value; });
+    Visit(y, [&](const LocalReal& t, double w, unsigned) { s += w * t.value; });
     return s;
   }
 
@@ -238,12 +255,15 @@ class ChargedFieldSystem {
 
   template <class Sink>
   void Accumulate(const double* y, double* f, Sink* sink) const {
-    Visit(y, [&](const LocalReal& t, double w) { AddTerm(t, w, f, sink); });
-    EndConnection(y, f, sink, nullptr);
+    Visit(y, [&](const LocalReal& t, double w, unsigned) {
+      AddTerm(t, w, f, sink);
+    });
+    EndConnection(y, f, sink, nullptr, kAllTerms);
     DataRows(y, f, sink);
   }
 
-  // Calls term(t, weight) for each real term of the single path's action.
+  // Calls term(t, weight, part) for each real term of the single path's
+  // action, part kMatter or kGauge.
   template <class Term>
   void Visit(const double* y, Term&& term) const {
     const auto& D = dt_.base();
@@ -255,22 +275,22 @@ class ChargedFieldSystem {
         const double w = D.NormWeight(i) * hx;
         TimeDifference(y, i, j, true, q);  // |D_0φ|²
         SquaredNorm(q, t);
-        term(t, w);
+        term(t, w, kMatter);
         for (int b = 0; b < d; ++b) {  // −|D_bφ|²
           SpaceDifference(y, i, j, b, q);
           SquaredNorm(q, t);
-          term(t, -w);
+          term(t, -w, kMatter);
         }
         Potential(y, i, j, t);
-        term(t, -w);
+        term(t, -w, kMatter);
         for (int b = 0; b < d; ++b) {  // E_b²/(2e²)
           Electric(y, i, j, b, t);
           Square(t);
-          term(t, 0.5 * w * inv_g2_[i]);
+          term(t, 0.5 * w * inv_g2_[i], kGauge);
           for (int c = b + 1; c < d; ++c) {  // −F_bc²/(2e²)
             Magnetic(y, i, j, b, c, t);
             Square(t);
-            term(t, -0.5 * w * inv_g2_[i]);
+            term(t, -0.5 * w * inv_g2_[i], kGauge);
           }
         }
       }
@@ -283,8 +303,8 @@ class ChargedFieldSystem {
   // (if not null) gets the term itself. The rows at the multipliers'
   // positions are the data (DataRows), not the derivatives in λ.
   template <class Sink>
-  void EndConnection(const double* y, double* f, Sink* sink,
-                     double* value) const {
+  void EndConnection(const double* y, double* f, Sink* sink, double* value,
+                     unsigned parts) const {
     const auto& D = dt_.base();
     const int last = nt_ - 1;
     const auto r = D.row(last);
@@ -292,12 +312,13 @@ class ChargedFieldSystem {
     for (int j = 0; j < nx_; ++j) {
       const double hx = grid_.NormWeight(j);
       for (int a = 0; a < kChi; ++a) {
+        if (!(parts & (a < A(0) ? kMatter : kGauge))) continue;
         const int x = Phi(last, j, a), l = Lambda3(j, a);
         if (f) f[x] += hx * y[l];
         if (sink) sink->Add(x, l, hx);
         if (value) *value += hx * y[l] * y[x];
       }
-      for (int b = 0; b < d; ++b) {
+      for (int b = 0; b < d && (parts & kGauge); ++b) {
         const int l = Lambda4(j, A(b));
         for (std::size_t e = 0; e < r.coeffs.size(); ++e) {
           const int x = Phi(r.first + int(e), j, A(b));
@@ -307,10 +328,12 @@ class ChargedFieldSystem {
           if (value) *value += c * y[l] * y[x];
         }
       }
+      if (!(parts & kMatter)) continue;
       TimeDifference(y, last, j, false, q);
       const int lr = Lambda4(j, kRe), li = Lambda4(j, kIm);
       AddProjection(q, lr, li, y, hx, f, sink);
-      if (value) *value += hx * (std::conj(Complex(y[lr], y[li])) * q.value).real();
+      if (value)
+        *value += hx * (std::conj(Complex(y[lr], y[li])) * q.value).real();
     }
   }
 
@@ -318,7 +341,8 @@ class ChargedFieldSystem {
   void Potential(const double* y, int i, int j, LocalReal& t) const {
     const int r = Phi(i, j, kRe), im = Phi(i, j, kIm);
     const double x[2] = {y[r], y[im]}, s = x[0] * x[0] + x[1] * x[1];
-    const double v1 = model_.PotentialSlope(s), v2 = model_.PotentialCurvature(s);
+    const double v1 = model_.PotentialSlope(s),
+                 v2 = model_.PotentialCurvature(s);
     t.n = 2;
     t.index[0] = r;
     t.index[1] = im;

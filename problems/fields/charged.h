@@ -15,9 +15,9 @@
 namespace vivp::fields {
 
 struct ScalarQed {
-  double mass2 = 0;    // m²
-  double lambda = 0;   // λ of the quartic term
-  double v2 = 0;       // v², the vacuum's |φ|² when λ > 0 and m² = 0
+  double mass2 = 0;   // m²
+  double lambda = 0;  // λ of the quartic term
+  double v2 = 0;      // v², the vacuum's |φ|² when λ > 0 and m² = 0
   std::function<double(double)> coupling = [](double) { return 1.0; };
 
   double Potential(double s) const {
