@@ -28,11 +28,11 @@ inline void Rotate(std::vector<double>& v, int r, int i, double theta) {
 }
 
 // The gauge α (alpha[i·Nx + j]) applied to the unknowns y and the system's
-// data (docs/gauge.md §7); move_chi_datum = false leaves the datum c of χ
-// in place, a wrong transformation (the control).
+// data (docs/gauge.md §7); shift_chi = false leaves χ in place, a wrong
+// transformation (the control: the transport phases no longer cancel).
 template <int d, class System>
 Moved Gauge(const System& s, const std::vector<double>& y,
-            const std::vector<double>& alpha, bool move_chi_datum = true) {
+            const std::vector<double>& alpha, bool shift_chi = true) {
   constexpr int m = System::m;
   const int nt = s.time_points(), nx = s.space_points();
   const auto& D = s.time_operator().base();
@@ -45,14 +45,10 @@ Moved Gauge(const System& s, const std::vector<double>& y,
       for (int b = 0; b < d; ++b)
         out.y[s.Phi(i, j, System::A(b))] +=
             (at(i, s.Next(j, b)) - at(i, j)) / s.h(b);
-      out.y[s.Phi(i, j, System::kChi)] += at(i, j);
+      if (shift_chi) out.y[s.Phi(i, j, System::kChi)] += at(i, j);
     }
-    for (auto lambda : {&System::Lambda3, &System::Lambda4})
-      Rotate(out.y, (s.*lambda)(j, System::kRe), (s.*lambda)(j, System::kIm),
-             at(nt - 1, j));
     Rotate(out.phi0, j * m + System::kRe, j * m + System::kIm, at(0, j));
     Rotate(out.pi0, j * m + System::kRe, j * m + System::kIm, at(0, j));
-    if (move_chi_datum) out.phi0[j * m + System::kChi] += at(0, j);
     for (int b = 0; b < d; ++b) {
       const int k = s.Next(j, b);
       out.phi0[j * m + System::A(b)] += (at(0, k) - at(0, j)) / s.h(b);

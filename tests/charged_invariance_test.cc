@@ -3,16 +3,15 @@
 // under a discrete gauge transformation α at every node, for every SBP
 // operator in time, in 1 + 1 and 2 + 1 D:
 //
-//   φ → e^{iα}φ,  A_b → A_b + D_b⁺α,  χ → χ + α  (A₀ = D̄χ → A₀ + Dα),
+//   φ → e^{iα}φ,  A_b → A_b + D_b⁺α,  χ → χ + α  (A₀ = Dχ → A₀ + Dα),
 //
-// with the data moved (φ₀, π₀ rotated by e^{iα(0)}, the datum of χ shifted
-// by α(0), a_b and ȧ_b by D_b⁺α(0) and D_b⁺(Dα)(0)) and the multipliers of φ
-// rotated by e^{iα(N)}. The action is unchanged to round-off, the rows of
-// A_b and χ are unchanged and those of φ rotate with it. The control: the
-// same transformation with χ's datum left in place (A₀ then moves by D̄α,
-// the regularization's shift included, instead of Dα) changes them far
-// above round-off, so the comparison does see a wrong transformation. The
-// Jacobian is checked against central differences of the residual.
+// with the data moved (φ₀, π₀ rotated by e^{iα(0)}, a_b and ȧ_b by D_b⁺α(0)
+// and D_b⁺(Dα)(0)). The action is unchanged to round-off, the rows of A_b
+// and χ are unchanged and those of φ rotate with it. The control: the same
+// transformation with χ left in place, so that the transport phases no
+// longer cancel, changes them far above round-off: the comparison does see
+// a wrong transformation. The Jacobian is checked against central
+// differences of the residual.
 #define BOOST_TEST_MODULE charged_invariance
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
@@ -69,7 +68,7 @@ struct Change {
 // under a random gauge of amplitude `amp`.
 template <int d>
 Change Violation(const std::string& op, int nt, const Grid& g, double amp,
-                 bool move_chi_datum = true) {
+                 bool shift_chi = true) {
   using System = vivp::action::ChargedFieldSystem<Model, d>;
   std::mt19937 rng(271127);
   Case<d> c(op, nt, g, rng);
@@ -77,7 +76,7 @@ Change Violation(const std::string& op, int nt, const Grid& g, double amp,
   std::vector<double> alpha(std::size_t(nt) * g.points());
   std::uniform_real_distribution<double> u(-amp, amp);
   for (double& a : alpha) a = u(rng);
-  auto moved = charged_test::Gauge<d>(before, c.y, alpha, move_chi_datum);
+  auto moved = charged_test::Gauge<d>(before, c.y, alpha, shift_chi);
   const System after(c.model, c.dbar, c.grid, moved.phi0, moved.pi0);
   std::vector<double> f0(before.size()), f1(before.size());
   before.Residual(c.y.data(), f0.data());
@@ -122,7 +121,7 @@ BOOST_AUTO_TEST_CASE(the_action_is_gauge_invariant_for_every_operator) {
       "sbp42", 16,
       Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 9, 0, 3)), 1.0,
       false);
-  BOOST_TEST_MESSAGE("control, χ's datum not moved: action "
+  BOOST_TEST_MESSAGE("control, χ not shifted: action "
                      << wrong.action << ", rows " << wrong.rows);
   BOOST_TEST(wrong.rows > 1e-3);
 }

@@ -11,6 +11,7 @@
 #include "core/action/charged_observables.h"
 #include "core/sbp/builder.h"
 #include "problems/fields/charged.h"
+#include "solvers/spacetime/charged_march.h"
 #include "solvers/spacetime/normal_solver.h"
 #include "solvers/variational/newton.h"
 
@@ -58,7 +59,52 @@ BOOST_AUTO_TEST_CASE(a_window_solves_with_gauss_law_at_every_node) {
       *std::max_element(obs.gauss_action.begin(), obs.gauss_action.end());
   const double textbook =
       *std::max_element(obs.gauss_textbook.begin(), obs.gauss_textbook.end());
-  BOOST_TEST_MESSAGE("Gauss of the action " << gauss << ", textbook "
-                                            << textbook);
+  const double rows =
+      *std::max_element(obs.gauss_rows.begin(), obs.gauss_rows.end());
+  BOOST_TEST_MESSAGE("Gauss of the action " << gauss << " (χ's rows " << rows
+                                            << "), textbook " << textbook);
   BOOST_TEST(gauss < 1e-12);
+}
+
+// Bad input is refused with the reason: a coupling that is not finite or
+// zero, non-finite data, an interval axis, and data with a net charge on a
+// torus (where Gauss's law has no solution).
+BOOST_AUTO_TEST_CASE(bad_input_is_refused_with_the_reason) {
+  const Grid grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, 8, 0, 4));
+  const vivp::sbp::RegularizedOperator<double> dbar(
+      vivp::sbp::MakeOperator<double>("sbp21", 8, 0.0, 0.5));
+  std::vector<double> phi0(8 * System::m, 0.1), pi0(8 * System::m, 0.0);
+  auto refused = [&](const Model& model, const std::vector<double>& phi,
+                     const Grid& g, const std::string& words) {
+    try {
+      const System sys(model, dbar, g, phi, pi0);
+    } catch (const std::invalid_argument& e) {
+      BOOST_TEST_MESSAGE(e.what());
+      return std::string(e.what()).find(words) != std::string::npos;
+    }
+    return false;
+  };
+  Model zero;
+  zero.coupling = [](double t) { return t < 0.3 ? 1.0 : 0.0; };
+  BOOST_TEST(refused(zero, phi0, grid, "coupling e(t) at t = 0.3"));
+  Model nan;
+  nan.coupling = [](double) { return std::nan(""); };
+  BOOST_TEST(refused(nan, phi0, grid, "must be finite and nonzero"));
+  std::vector<double> bad = phi0;
+  bad[5] = INFINITY;
+  BOOST_TEST(refused(Model{}, bad, grid, "non-finite value at entry 5"));
+  const Grid interval(
+      vivp::sbp::SpaceDerivative<double>::Bounded("sbp21", 8, 0, 4));
+  BOOST_TEST(refused(Model{}, phi0, interval, "needs periodic axes"));
+  // One charge alone on the circle: φ = 0.1, π = −0.1i φ everywhere.
+  std::vector<double> pi(8 * System::m, 0.0);
+  for (int j = 0; j < 8; ++j) pi[j * System::m + System::kIm] = -0.01;
+  vivp::spacetime::ChargedMarchOptions o;
+  o.time_operator = "sbp21";
+  o.window = 8;
+  const auto r = vivp::spacetime::MarchCharged<Model, 1>(
+      Model{}, grid, phi0, pi, o, [](auto&&...) {});
+  BOOST_TEST_MESSAGE(r.reason);
+  BOOST_TEST(!r.ok);
+  BOOST_TEST(r.reason.find("neutral") != std::string::npos);
 }

@@ -1,32 +1,25 @@
-// The reduced doubled action of a charged scalar field coupled to a U(1)
-// gauge field on a periodic grid of d axes (docs/gauge.md §7), exactly
-// invariant under discrete gauge transformations for every SBP operator in
-// time. With D_μ = ∂_μ − iA_μ and A_μ → A_μ + ∂_μα, φ → e^{iα}φ:
+// The reduced doubled action of a charged scalar field and its U(1) gauge
+// field on a periodic grid of d axes, exactly invariant under discrete gauge
+// transformations for every SBP operator in time (docs/gauge.md §7). With
+// D_μ = ∂_μ − iA_μ, A_μ → A_μ + ∂_μα, φ → e^{iα}φ:
 //
 //   ℒ = (1/(2e(t)²)) (Σ_b E_b² − Σ_{b<c} F_bc²) + |D_0φ|² − Σ_b |D_bφ|²
 //       − V(|φ|²),     E_b = ∂_tA_b − ∂_bA₀,  F_bc = ∂_bA_c − ∂_cA_b,
 //
-// discretized as
-//   - A_b on the links (j, j + ê_b), the forward difference D_b⁺ in space:
-//     (D_bφ)_j = (e^{−ih_bA_b,j} φ_{j+ê_b} − φ_j)/h_b, E_b = D̄A_b − D_b⁺A₀,
-//     F_bc = D_b⁺A_c − D_c⁺A_b;
-//   - A₀ = D̄χ at the nodes (the temporal Wilson line): χ is the unknown,
-//     and the time derivative of φ is transported along D̄'s stencil,
-//     (D_0φ)_i = e^{iχ_i} Σ_k D̄_ik e^{−iχ_k} φ_k, its regularization datum
-//     e^{−ic}φ₀ with c the datum of χ;
-//   - the doubled action's data and end connection as for every field
-//     (field_system.h), the velocity ones covariant: (D_0φ)(0) = π₀ and
-//     Re(λ̄4 (D_0φ)(N)) with D's rows unregularized.
-// Under α at every node (data moved with it: φ₀ → e^{iα₀}φ₀, π₀ →
-// e^{iα₀}π₀, c → c + α₀, a_b → a_b + D_b⁺α₀, ȧ_b → ȧ_b + D_b⁺(Dα)₀, the
-// multipliers rotated) every term is unchanged: the transport phases cancel
-// e^{iα} node by node whatever the stencil's width, and D̄, D_b⁺ commute.
-//
-// Unknowns as field_system.h with m = 3 + d components per node, (Re φ,
-// Im φ, A_0 … A_{d−1} of the links, χ): φ₊(i, j, a) at j·B + i·m + a, then
-// λ3(j, ·) and λ4(j, ·), B = (Nt + 2)m; χ has no data and no end
-// connection (its two rows read λ3 = λ4 = 0). The model supplies
-// Potential(s), its derivatives in s = |φ|², and InverseCouplingSquared(t).
+//   - A_b on the links (j, j + ê_b): (D_bφ)_j = (e^{−ih_bA_b,j} φ_{j+ê_b} −
+//     φ_j)/h_b, E_b = D̄A_b − D_b⁺A₀, F_bc = D_b⁺A_c − D_c⁺A_b;
+//   - A₀ = Dχ (the temporal Wilson line; D unregularized, χ has no datum):
+//     the time difference of φ is transported along D̄'s stencil, (D_0φ)_i =
+//     e^{iχ_i} Σ_k D̄_ik e^{−iχ_k} φ_k, with the shift p(φ_0 − φ₀);
+//   - the data as for every field (field_system.h), φ's velocity covariant,
+//     (D_0φ)(0) = π₀; the end connection λ3·x(N) + λ4·(Dx)(N) on ψ =
+//     e^{−iχ}φ and Ã_b = A_b − D_b⁺χ (the fields in the gauge A₀ = 0), gauge
+//     invariant term by term.
+// Under α at every node, the data moved with it, every term is unchanged.
+// Unknowns as field_system.h with m = 3 + d components (Re φ, Im φ, A_0 …
+// A_{d−1}, χ); χ has no data and no end connection (λ3 = λ4 = 0). The model
+// supplies Potential(s) and its derivatives in s = |φ|², and
+// InverseCouplingSquared(t).
 #pragma once
 
 #include <algorithm>
@@ -36,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "core/action/charged_terms.h"
 #include "core/action/local_terms.h"
 #include "core/sbp/regularized.h"
 #include "core/sbp/space_grid.h"
@@ -43,15 +37,18 @@
 namespace vivp::action {
 
 template <class Model, int d>
-class ChargedFieldSystem {
+class ChargedFieldSystem : public ChargedLayout<d> {
  public:
-  static constexpr int m = 3 + d;
-  static constexpr int kRe = 0, kIm = 1, kChi = 2 + d;
-  static constexpr int A(int b) { return 2 + b; }
+  using Layout = ChargedLayout<d>;
+  using Layout::A;
+  using Layout::kChi;
+  using Layout::kIm;
+  using Layout::kRe;
+  using Layout::m;
   using Scalar = double;
 
-  // phi0 and pi0 as field_system.h: per point j, (Re φ, Im φ, a_0 …, c) and
-  // (Re π, Im π, ȧ_0 …, unused). Every axis of grid periodic.
+  // phi0 and pi0 as field_system.h: per point j, (Re φ, Im φ, a_0 …, unused)
+  // and (Re π, Im π, ȧ_0 …, unused). Every axis of grid periodic.
   ChargedFieldSystem(const Model& model,
                      const sbp::RegularizedOperator<double>& dt,
                      sbp::SpaceGrid<double> grid, std::vector<double> phi0,
@@ -81,16 +78,8 @@ class ChargedFieldSystem {
   int Lambda3(int j, int a) const { return j * block() + nt_ * m + a; }
   int Lambda4(int j, int a) const { return j * block() + (nt_ + 1) * m + a; }
   // The point one link along axis b (periodic).
-  int Next(int j, int b) const {
-    const int c = grid_.Coordinate(j, b);
-    return c + 1 < grid_.points(b) ? j + grid_.stride(b)
-                                   : j - c * grid_.stride(b);
-  }
-  int Previous(int j, int b) const {
-    const int c = grid_.Coordinate(j, b);
-    return c > 0 ? j - grid_.stride(b)
-                 : j + (grid_.points(b) - 1) * grid_.stride(b);
-  }
+  int Next(int j, int b) const { return NextOn(grid_, j, b); }
+  int Previous(int j, int b) const { return PreviousOn(grid_, j, b); }
   double h(int b) const { return grid_.axis(b).dx(); }
   const sbp::RegularizedOperator<double>& time_operator() const { return dt_; }
   const sbp::SpaceGrid<double>& space_grid() const { return grid_; }
@@ -105,11 +94,13 @@ class ChargedFieldSystem {
           "initial data: expected " + std::to_string(n) +
           " values of the data and of their velocities, got " +
           std::to_string(phi0.size()) + " and " + std::to_string(pi0.size()));
+    CheckFinite("the initial data", phi0);
+    CheckFinite("the initial velocities", pi0);
     phi0_ = std::move(phi0);
     pi0_ = std::move(pi0);
     inv_g2_.resize(nt_);
     for (int i = 0; i < nt_; ++i)
-      inv_g2_[i] = model_.InverseCouplingSquared(dt_.base().t(i));
+      inv_g2_[i] = CheckedInverseCouplingSquared(model_, dt_.base().t(i));
   }
 
   // (D x)_i of component a at point j, or (D̄ x)_i with the component's
@@ -125,35 +116,42 @@ class ChargedFieldSystem {
       s += dt_.penalty() * (y[Phi(0, j, a)] - phi0_[j * m + a]);
     return s;
   }
-  // A₀ = D̄χ at node (i, j).
+  // A₀ = Dχ at node (i, j).
   double A0(const double* y, int i, int j) const {
-    return TimeRow(y, i, j, kChi, true);
+    return TimeRow(y, i, j, kChi, false);
   }
 
   // The covariant time difference of φ along row `row` of D (D̄ when
-  // regularized) at point j, anchored at node `row`: its value and
-  // derivatives in q.
+  // regularized) at point j, anchored at node `row`, into q.
   void TimeDifference(const double* y, int row, int j, bool regularized,
-                      LocalComplex& q) const {
+                      LocalComplex& q, bool anchored = true) const {
     const auto& D = dt_.base();
     const auto r = D.row(row);
     double c[LocalComplex::kMax];
     const int count = int(r.coeffs.size());
     for (int e = 0; e < count; ++e) c[e] = r.coeffs[e] * D.inv_dt();
-    Complex s = 0;
-    if (regularized && row == 0) {
-      // D̄ adds p(ψ_0 − ψ_init), ψ = e^{−iχ}φ, ψ_init = e^{−ic}φ₀.
-      const double p = dt_.penalty();
-      c[0 - r.first] += p;
-      s = -p * std::polar(1.0, -phi0_[j * m + kChi]) *
-          Complex(phi0_[j * m + kRe], phi0_[j * m + kIm]);
-    }
     Transport(
-        r.first, c, count, row, s, [&](int k) { return Phi(k, j, kRe); },
+        r.first, c, count, anchored ? row : -1, Complex(0),
+        [&](int k) { return Phi(k, j, kRe); },
         [&](int k) { return Phi(k, j, kIm); },
         [&](int k) { return Phi(k, j, kChi); },
         [&](int k) { return Complex(y[Phi(k, j, kRe)], y[Phi(k, j, kIm)]); },
         [&](int k) { return y[Phi(k, j, kChi)]; }, q);
+    if (regularized && row == 0) {
+      // D̄ adds p(ψ_0 − ψ_init) for ψ = e^{−iχ}φ. Its datum is the data
+      // transported to the node's own χ_0, ψ_init = e^{−iχ_0}φ₀, so that the
+      // shift, e^{iχ_0}p(ψ_0 − ψ_init) = p(φ_0 − φ₀), vanishes with the value
+      // row as for every field. (A fixed datum e^{−ic}φ₀, with A₀ = D̄χ on
+      // the same c, solved to round-off but left a shift p(1 − e^{i(χ_0 −
+      // c)})φ₀ where the solution's χ_0 ≠ c: the energy drifted 1.6 % in
+      // t = 1.5 whatever Δt, docs/gauge.md §8.)
+      const double p = dt_.penalty();
+      const int re = q.Slot(Phi(0, j, kRe)), im = q.Slot(Phi(0, j, kIm));
+      q.value += p * (Complex(y[Phi(0, j, kRe)], y[Phi(0, j, kIm)]) -
+                      Complex(phi0_[j * m + kRe], phi0_[j * m + kIm]));
+      q.d[re] += p;
+      q.d[im] += Complex(0, p);
+    }
   }
 
   // The covariant forward difference (D_bφ)_j at node i over (Re φ_j,
@@ -161,25 +159,9 @@ class ChargedFieldSystem {
   void SpaceDifference(const double* y, int i, int j, int b,
                        LocalComplex& q) const {
     const int k = Next(j, b);
-    const double hb = h(b), a = y[Phi(i, j, A(b))];
-    const Complex I(0, 1), u = std::polar(1.0, -hb * a);
-    const Complex next(y[Phi(i, k, kRe)], y[Phi(i, k, kIm)]);
-    const Complex here(y[Phi(i, j, kRe)], y[Phi(i, j, kIm)]);
-    q.Reset(5);
-    const int r0 = q.Slot(Phi(i, j, kRe)), i0 = q.Slot(Phi(i, j, kIm));
-    const int r1 = q.Slot(Phi(i, k, kRe)), i1 = q.Slot(Phi(i, k, kIm));
-    const int ab = q.Slot(Phi(i, j, A(b)));
-    q.value = (u * next - here) / hb;
-    q.d[r0] = -1.0 / hb;
-    q.d[i0] = -I / hb;
-    q.d[r1] = u / hb;
-    q.d[i1] = I * u / hb;
-    q.d[ab] = -I * u * next;
-    q.dd(r1, ab) = q.dd(ab, r1) = -I * u;
-    q.dd(i1, ab) = q.dd(ab, i1) = u;
-    q.dd(ab, ab) = -hb * u * next;
+    ForwardDifference(h(b), y, Phi(i, j, kRe), Phi(i, j, kIm), Phi(i, k, kRe),
+                      Phi(i, k, kIm), Phi(i, j, A(b)), q);
   }
-
   // E_b at node (i, j) as a linear form: coefficients over the unknowns in
   // out (value at y), E = D̄A_b − D_b⁺A₀.
   void Electric(const double* y, int i, int j, int b, LocalReal& out) const {
@@ -190,12 +172,11 @@ class ChargedFieldSystem {
     out.g.setZero(out.n);
     const double hb = h(b);
     for (int e = 0; e < count; ++e) {
-      const double c = r.coeffs[e] * D.inv_dt() +
-                       (i == 0 && e == -r.first ? dt_.penalty() : 0.0);
+      const double c = r.coeffs[e] * D.inv_dt();
       out.index[e] = Phi(r.first + e, j, A(b));
       out.index[count + e] = Phi(r.first + e, k, kChi);
       out.index[2 * count + e] = Phi(r.first + e, j, kChi);
-      out.g[e] = c;
+      out.g[e] = c + (i == 0 && e == -r.first ? dt_.penalty() : 0.0);
       out.g[count + e] = -c / hb;
       out.g[2 * count + e] = c / hb;
     }
@@ -205,21 +186,24 @@ class ChargedFieldSystem {
   // F_bc at node (i, j), b < c, as a linear form.
   void Magnetic(const double* y, int i, int j, int b, int c,
                 LocalReal& out) const {
-    const int kb = Next(j, b), kc = Next(j, c);
-    out.n = 4;
-    out.index[0] = Phi(i, kb, A(c));
-    out.index[1] = Phi(i, j, A(c));
-    out.index[2] = Phi(i, kc, A(b));
-    out.index[3] = Phi(i, j, A(b));
-    out.g.resize(4);
-    out.g << 1 / h(b), -1 / h(b), -1 / h(c), 1 / h(c);
-    out.value = 0;
-    for (int e = 0; e < 4; ++e) out.value += out.g[e] * y[out.index[e]];
+    MagneticAt<d>(
+        grid_, y, j, b, c, [&](int jj, int a) { return Phi(i, jj, a); }, out);
   }
-
   // Which terms a residual holds: the matter's (|D_0φ|², |D_bφ|², V and
   // φ's end connection) and the gauge field's (E², F² and A_b's).
   static constexpr unsigned kMatter = 1u, kGauge = 2u, kAllTerms = 3u;
+
+  // The unknowns Newton holds at their start: χ at the nodes 2 … N − 1.
+  // Every solution has a gauge-equivalent one with any chosen values there
+  // (α_k = chosen − χ_k at those nodes, α_1 from (Dα)(0) = 0, α_0 = 0: the
+  // data do not move), so holding them picks the representative and loses
+  // no solution; their rows follow from the others by the Noether identity
+  // of those directions (the end connection is invariant term by term), and
+  // are checked afterwards with all the others (charged_observables.h).
+  bool Held(int k) const {
+    const int i = (k % block()) / m, a = (k % block()) % m;
+    return a == kChi && i >= 2 && i < nt_;
+  }
 
   void Residual(const double* y, double* f) const {
     std::fill(f, f + size(), 0.0);
@@ -311,58 +295,57 @@ class ChargedFieldSystem {
     LocalComplex q;
     for (int j = 0; j < nx_; ++j) {
       const double hx = grid_.NormWeight(j);
-      for (int a = 0; a < kChi; ++a) {
-        if (!(parts & (a < A(0) ? kMatter : kGauge))) continue;
-        const int x = Phi(last, j, a), l = Lambda3(j, a);
-        if (f) f[x] += hx * y[l];
-        if (sink) sink->Add(x, l, hx);
-        if (value) *value += hx * y[l] * y[x];
-      }
+      // A_b's connection on Ã_b = A_b − D_b⁺χ, the potential in the frame
+      // of the Wilson line (the gauge A₀ = 0): λ3·Ã(N) + λ4·(DÃ)(N), with
+      // (DÃ)(N) = (DA)(N) − D_b⁺A₀(N) = E_b(N). Gauge invariant term by term.
       for (int b = 0; b < d && (parts & kGauge); ++b) {
-        const int l = Lambda4(j, A(b));
-        for (std::size_t e = 0; e < r.coeffs.size(); ++e) {
-          const int x = Phi(r.first + int(e), j, A(b));
-          const double c = hx * r.coeffs[e] * D.inv_dt();
-          if (f) f[x] += c * y[l];
-          if (sink) sink->Add(x, l, c);
-          if (value) *value += c * y[l] * y[x];
-        }
+        const int k = Next(j, b);
+        const double hb = h(b);
+        auto link = [&](int l, int node, double c) {  // c·(A_b − D_b⁺χ)(node)
+          const int xs[3] = {Phi(node, j, A(b)), Phi(node, k, kChi),
+                             Phi(node, j, kChi)};
+          const double cs[3] = {c, -c / hb, c / hb};
+          for (int e = 0; e < 3; ++e) {
+            if (f) f[xs[e]] += hx * cs[e] * y[l];
+            if (sink) sink->Add(xs[e], l, hx * cs[e]);
+            if (value) *value += hx * cs[e] * y[l] * y[xs[e]];
+          }
+        };
+        link(Lambda3(j, A(b)), last, 1.0);
+        for (std::size_t e = 0; e < r.coeffs.size(); ++e)
+          link(Lambda4(j, A(b)), r.first + int(e), r.coeffs[e] * D.inv_dt());
       }
       if (!(parts & kMatter)) continue;
-      TimeDifference(y, last, j, false, q);
-      const int lr = Lambda4(j, kRe), li = Lambda4(j, kIm);
-      AddProjection(q, lr, li, y, hx, f, sink);
-      if (value)
-        *value += hx * (std::conj(Complex(y[lr], y[li])) * q.value).real();
+      // φ's connection in the frame of the Wilson line, on ψ = e^{−iχ}φ:
+      // λ3·ψ(N) + λ4·(Dψ)(N), invariant without rotating the multipliers.
+      const double one = 1.0;
+      for (int which = 0; which < 2; ++which) {
+        if (which == 0)
+          Transport(
+              last, &one, 1, -1, Complex(0),
+              [&](int k) { return Phi(k, j, kRe); },
+              [&](int k) { return Phi(k, j, kIm); },
+              [&](int k) { return Phi(k, j, kChi); },
+              [&](int k) {
+                return Complex(y[Phi(k, j, kRe)], y[Phi(k, j, kIm)]);
+              },
+              [&](int k) { return y[Phi(k, j, kChi)]; }, q);
+        else
+          TimeDifference(y, last, j, false, q, false);
+        const int lr = which == 0 ? Lambda3(j, kRe) : Lambda4(j, kRe);
+        const int li = which == 0 ? Lambda3(j, kIm) : Lambda4(j, kIm);
+        AddProjection(q, lr, li, y, hx, f, sink);
+        if (value)
+          *value += hx * (std::conj(Complex(y[lr], y[li])) * q.value).real();
+      }
     }
   }
 
-  // −V(|φ|²) enters with the caller's sign; here V and its derivatives.
+  // V(|φ|²) and its derivatives in (Re φ, Im φ) at positions r, im of y
+  // (the caller gives the sign).
   void Potential(const double* y, int i, int j, LocalReal& t) const {
-    const int r = Phi(i, j, kRe), im = Phi(i, j, kIm);
-    const double x[2] = {y[r], y[im]}, s = x[0] * x[0] + x[1] * x[1];
-    const double v1 = model_.PotentialSlope(s),
-                 v2 = model_.PotentialCurvature(s);
-    t.n = 2;
-    t.index[0] = r;
-    t.index[1] = im;
-    t.value = model_.Potential(s);
-    t.g.resize(2);
-    t.h.resize(2, 2);
-    for (int a = 0; a < 2; ++a) {
-      t.g[a] = 2 * x[a] * v1;
-      for (int b = 0; b < 2; ++b)
-        t.h(a, b) = 2 * v1 * (a == b) + 4 * x[a] * x[b] * v2;
-    }
+    PotentialAt(model_, y, Phi(i, j, kRe), Phi(i, j, kIm), t);
   }
-
-  // A linear form ℓ (t.g its coefficients, t.value its value) → ℓ².
-  static void Square(LocalReal& t) {
-    t.h = 2.0 * t.g * t.g.transpose();
-    t.g *= 2.0 * t.value;
-    t.value *= t.value;
-  }
-
   // The rows at the multipliers' positions: the initial data, covariant for
   // the velocity of φ; λ3 = λ4 = 0 for χ.
   template <class Sink>

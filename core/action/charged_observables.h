@@ -3,13 +3,16 @@
 // forms (docs/gauge.md §7).
 //
 // The action's Gauss law is A₀'s Euler–Lagrange equation. The unknown is
-// χ with A₀ = D̄χ, so χ's rows are D̄ᵀ applied to A₀'s, and per spatial point
+// χ with A₀ = Dχ, so χ's rows are Dᵀ applied to A₀'s, and per spatial point
 //
-//   G(·, j) = D̄⁻ᵀ (rows of χ at j),
+//   G(·, j) = (Dᵀ)⁺ (rows of χ at j),
 //
-// split into the gauge field's part Hᵗ_i Hˣ_j (D⁻·E)_ij / e² and the
-// matter's, minus Hᵗ_i Hˣ_j times the action's charge density. Its size is
-// measured against the two parts that cancel in it, slice by slice.
+// the minimum-norm solution (D annihilates constants, so Dᵀ has one null
+// direction w in time, along which χ's rows say nothing about A₀'s; G is
+// the part of A₀'s law that the action's χ determines). It splits into the
+// gauge field's part Hᵗ_i Hˣ_j (D⁻·E)_ij / e² and the matter's, minus
+// Hᵗ_i Hˣ_j times the action's charge density, and its size is measured
+// against the two parts that cancel in it, slice by slice.
 // The textbook law beside it is (D⁻·E)/e² − ρ with ρ = 2 Im(φ̄ D_0φ) at the
 // node, the covariant time difference of the action: they differ at
 // O(Δt^p) (Ipp & Müller 2018).
@@ -30,7 +33,13 @@ struct ChargedNodes {
   std::vector<double>
       gauss_action;  // |G| / the slice's max(|gauge| + |matter|)
   std::vector<double> gauss_textbook;  // the same for (D⁻·E)/e² − ρ
-  std::vector<double> charge;          // ρ = 2 Im(φ̄ D_0φ)
+  // χ's rows, Dᵀ G, relative to their two parts: the law as the action
+  // states it for the unknown χ, before (Dᵀ)⁺ recovers G.
+  std::vector<double> gauss_rows;
+  std::vector<double> charge;  // ρ = 2 Im(φ̄ D_0φ)
+  // The action's charge density: minus the matter's part of G over Hᵗ Hˣ,
+  // so that the action's law reads (D⁻·E)/e² = ρ_action.
+  std::vector<double> charge_action;
   std::vector<double> modulus;         // |φ|
   std::vector<double> energy_density;  // (E² + F²)/(2e²) + |D_0φ|² + |Dφ|² + V
   std::vector<double> electric;        // E_b at (i·Nx + j)·d + b
@@ -75,30 +84,46 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
       out.energy_density[n] = e + 0.5 * inv_g2 * field;
     }
   }
-  // The action's law from χ's rows of each part.
+  // The action's law from χ's rows of each part: Dᵀ, minimum-norm.
   Eigen::MatrixXd dbar_t = Eigen::MatrixXd::Zero(nt, nt);
   for (int i = 0; i < nt; ++i)
     for (int k = 0; k < nt; ++k) dbar_t(k, i) = D.Entry(i, k);
-  dbar_t(0, 0) += s.time_operator().penalty();
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(dbar_t);
-  auto part = [&](unsigned parts) {
+  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> lu(dbar_t);
+  auto rows_of = [&](unsigned parts) {
     std::vector<double> f(s.size());
     s.PartialResidual(y, f.data(), parts);
     Eigen::MatrixXd rows(nt, nx);
     for (int j = 0; j < nx; ++j)
       for (int i = 0; i < nt; ++i) rows(i, j) = f[s.Phi(i, j, System::kChi)];
-    return Eigen::MatrixXd(lu.solve(rows));
+    return rows;
   };
-  const Eigen::MatrixXd gauge = part(System::kGauge),
-                        matter = part(System::kMatter);
+
+  {  // χ's rows themselves, Dᵀ of the law: no inversion.
+    const Eigen::MatrixXd rg = rows_of(System::kGauge),
+                          rm = rows_of(System::kMatter),
+                          rt = rows_of(System::kAllTerms);
+    out.gauss_rows.resize(nodes);
+    for (int i = 0; i < nt; ++i) {
+      double scale = 0;
+      for (int j = 0; j < nx; ++j)
+        scale = std::max(scale, std::abs(rg(i, j)) + std::abs(rm(i, j)));
+      for (int j = 0; j < nx; ++j)
+        out.gauss_rows[std::size_t(i) * nx + j] =
+            scale > 0 ? std::abs(rt(i, j)) / scale : 0.0;
+    }
+  }
+  // G from the sum of the rows, which cancel to round-off; its gauge
+  // field's part is local, Hᵗ Hˣ (D⁻·E)/e², and the matter's part is the
+  // rest.
+  const Eigen::MatrixXd total = lu.solve(rows_of(System::kAllTerms));
   out.gauss_action.resize(nodes);
   out.gauss_textbook.resize(nodes);
+  out.charge_action.resize(nodes);
   for (int i = 0; i < nt; ++i) {
     const double inv_g2 = s.model().InverseCouplingSquared(D.t(i));
     double scale = 0, scale_tb = 0;
     std::vector<double> div(nx);
     for (int j = 0; j < nx; ++j) {
-      scale = std::max(scale, std::abs(gauge(i, j)) + std::abs(matter(i, j)));
       double dv = 0;
       for (int b = 0; b < d; ++b) {
         const int back = s.Previous(j, b);
@@ -108,14 +133,20 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
             s.h(b);
       }
       div[j] = dv * inv_g2;
+      const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
+      // ρ_action = (D⁻·E)/e² − G/(Hᵗ Hˣ)
+      const double rho = div[j] - total(i, j) / weight;
+      out.charge_action[std::size_t(i) * nx + j] = rho;
+      scale = std::max(scale, std::abs(div[j]) + std::abs(rho));
       scale_tb =
           std::max(scale_tb, std::abs(div[j]) +
                                  std::abs(out.charge[std::size_t(i) * nx + j]));
     }
     for (int j = 0; j < nx; ++j) {
       const std::size_t n = std::size_t(i) * nx + j;
+      const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
       out.gauss_action[n] =
-          scale > 0 ? std::abs(gauge(i, j) + matter(i, j)) / scale : 0.0;
+          scale > 0 ? std::abs(total(i, j)) / weight / scale : 0.0;
       out.gauss_textbook[n] =
           scale_tb > 0 ? std::abs(div[j] - out.charge[n]) / scale_tb : 0.0;
     }

@@ -101,9 +101,9 @@ void AddProjection(const LocalComplex& q, int lr, int li, const double* y,
 //   w = e^{iχ_A} (Σ_k c_k e^{−iχ_k} φ_k + s),
 //
 // over the unknowns (Re φ_k, Im φ_k, χ_k) of the nodes k and the anchor's
-// χ_A: the covariant difference of a charged field with A₀ = D̄χ (the
-// temporal Wilson line, docs/gauge.md §7). re(k), im(k), chi(k) give the
-// global positions, value(k) φ_k and chi_value(k) χ_k.
+// χ_A (anchor < 0: no anchor, w = Σ): the covariant difference of a charged
+// field with A₀ = Dχ (the temporal Wilson line, docs/gauge.md §7). re(k),
+// im(k), chi(k) give the global positions, value(k) φ_k and chi_value(k) χ_k.
 template <class Re, class Im, class Chi, class Value, class ChiValue>
 void Transport(int first, const double* c, int count, int anchor, Complex s,
                Re re, Im im, Chi chi, Value value, ChiValue chi_value,
@@ -125,6 +125,10 @@ void Transport(int first, const double* c, int count, int anchor, Complex s,
     q.dd(ai, ac) += c[e] * rot;
     q.dd(ac, ai) += c[e] * rot;
     q.dd(ac, ac) += -c[e] * u;
+  }
+  if (anchor < 0) {  // no anchor: w = Σ
+    q.value = sum;
+    return;
   }
   // The anchor's phase: w = e^{iχ_A} Σ, so ∂_a w = e^{iχ_A}(∂_a Σ + i δ_aA Σ)
   // and ∂_a∂_b w = e^{iχ_A}(∂_a∂_b Σ + i δ_aA ∂_b Σ + i δ_bA ∂_a Σ

@@ -25,6 +25,7 @@
 #include <Eigen/SparseCore>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "solvers/spacetime/assembly.h"
 
@@ -48,9 +49,17 @@ class NormalEquationsSolver {
   void Assemble(const System& system, const double* y) {
     jacobian_.Assemble(system.size(),
                        [&](auto& sink) { system.Jacobian(y, sink); });
+    held_.assign(system.size(), false);
+    if constexpr (requires { system.Held(0); })
+      for (int k = 0; k < system.size(); ++k) held_[k] = system.Held(k);
   }
   bool Factorize() {
-    const auto& j = jacobian_.matrix();
+    // A held unknown's column and row leave the system; its step is 0.
+    Eigen::SparseMatrix<double> j = jacobian_.matrix();
+    for (int c = 0; c < j.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(j, c); it; ++it)
+        if (held_[it.row()] || held_[it.col()])
+          it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
     scale_.resize(j.cols());
     for (int k = 0; k < j.cols(); ++k) {
       const double c = j.col(k).norm();
@@ -75,7 +84,9 @@ class NormalEquationsSolver {
   }
   void Solve(double* b) const {
     const Eigen::Index n = scaled_.rows();
-    const Eigen::Map<Eigen::VectorXd> rhs(b, n);
+    Eigen::Map<Eigen::VectorXd> rhs(b, n);
+    for (Eigen::Index k = 0; k < n; ++k)
+      if (held_[k]) rhs[k] = 0;
     Eigen::VectorXd z = ldlt_.solve(scaled_.transpose() * rhs);
     // One refinement on the unsquared system: the normal equations square
     // the condition number.
@@ -90,6 +101,7 @@ class NormalEquationsSolver {
   PatternedMatrix jacobian_;
   Eigen::SparseMatrix<double> scaled_, normal_;
   Eigen::VectorXd scale_;
+  std::vector<bool> held_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   int analyzed_ = 0;
   std::string message_;
