@@ -276,3 +276,86 @@ BOOST_AUTO_TEST_CASE(a_coupling_that_changes_in_time_keeps_gauss_law) {
       BOOST_TEST(worst > 1e-2);  // the failure the variational march avoids
   }
 }
+
+namespace {
+
+// |φ| and E at the end of a march to t = 1.5, windows of 16.
+struct End {
+  std::vector<double> modulus, electric;
+};
+End EndOf(int n, const char* op, double dt) {
+  const Grid g = Line(n);
+  const int windows = int(std::lround(1.5 / (15 * dt)));
+  const Run run = March(Qed(), g, Pair(g, 1.0), Options(op, dt, windows));
+  BOOST_REQUIRE(run.ok);
+  End e;
+  for (int j = 0; j < n; ++j) {
+    e.modulus.push_back(std::hypot(run.phi[j * m], run.phi[j * m + 1]));
+    e.electric.push_back(run.pi[j * m + System::A(0)]);
+  }
+  return e;
+}
+
+// max |a − b| over the coarse grid's points (links): b on a grid r times
+// finer, its links averaged over each coarse link.
+double Apart(const End& coarse, const End& fine, bool links) {
+  const int n = int(coarse.modulus.size()), r = int(fine.modulus.size()) / n;
+  double d = 0;
+  for (int j = 0; j < n; ++j) {
+    double f = 0;
+    if (links)
+      for (int k = 0; k < r; ++k) f += fine.electric[j * r + k] / r;
+    else
+      f = fine.modulus[j * r];
+    d = std::max(
+        d, std::abs((links ? coarse.electric[j] : coarse.modulus[j]) - f));
+  }
+  return d;
+}
+
+double Slope(double e0, double e1, double ratio) {
+  return std::log(e0 / e1) / std::log(ratio);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(orders_in_time_and_space) {
+  // In Δt on 64 points against Δt = 0.00625 (SBP42), the corrected end state.
+  const End reference = EndOf(64, "sbp42", 0.00625);
+  for (const char* op : {"sbp21", "sbp42"}) {
+    std::vector<double> phi_err, e_err;
+    for (double dt : {0.1, 0.05, 0.025}) {
+      const End e = EndOf(64, op, dt);
+      phi_err.push_back(Apart(e, reference, false));
+      e_err.push_back(Apart(e, reference, true));
+    }
+    const double p_phi = Slope(phi_err[1], phi_err[2], 2),
+                 p_e = Slope(e_err[1], e_err[2], 2);
+    BOOST_TEST_MESSAGE(op << ": |φ| off by " << phi_err[0] << ", " << phi_err[1]
+                          << ", " << phi_err[2] << " (order " << p_phi
+                          << "); E off by " << e_err[0] << ", " << e_err[1]
+                          << ", " << e_err[2] << " (order " << p_e << ")");
+    const double expected = op[3] == '2' ? 2 : 4;
+    BOOST_TEST(std::abs(p_phi - expected) < 0.3);
+    BOOST_TEST(std::abs(p_e - expected) < 0.3);
+  }
+  // In Δx: 32, 64, 128 points against 256, SBP42 at Δt = 0.0125 (its error
+  // is below the spatial one), |φ| at the coarse points and E averaged over
+  // each coarse link.
+  const End fine = EndOf(256, "sbp42", 0.0125);
+  std::vector<double> phi_err, e_err;
+  for (int n : {32, 64, 128}) {
+    const End e = EndOf(n, "sbp42", 0.0125);
+    phi_err.push_back(Apart(e, fine, false));
+    e_err.push_back(Apart(e, fine, true));
+  }
+  const double p_phi = Slope(phi_err[0], phi_err[1], 2),
+               p_e = Slope(e_err[0], e_err[1], 2);
+  BOOST_TEST_MESSAGE("space: |φ| off by "
+                     << phi_err[0] << ", " << phi_err[1] << ", " << phi_err[2]
+                     << " (order " << p_phi << "); E off by " << e_err[0]
+                     << ", " << e_err[1] << ", " << e_err[2] << " (order "
+                     << p_e << ")");
+  BOOST_TEST(std::abs(p_phi - 2) < 0.3);
+  BOOST_TEST(std::abs(p_e - 2) < 0.3);
+}
