@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/linalg/fit.h"
+#include "studies/charged_waves.h"
 #include "studies/gauge_waves.h"
 
 namespace {
@@ -61,11 +62,7 @@ void GaussTable(bool markdown, bool quick) {
     std::printf("%-6s %3s %6s %8s %7s %10s %10s %10s %10s %7s\n", "time", "W",
                 "Δt/lim", "Δt", "windows", "gauss", "hand-off", "textbook",
                 "E error", "seconds");
-  const std::vector<std::string> ops =
-      quick ? std::vector<std::string>{"sbp42"}
-            : std::vector<std::string>{"sbp21", "sbp42", "sbp63"};
-  const std::vector<int> windows =
-      quick ? std::vector<int>{16} : std::vector<int>{8, 16, 32, 64};
+  const auto [ops, windows] = vivp::studies::GaussSweepOf(quick);
   double worst = 0;
   bool failed = false;
   for (const auto& op : ops)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "problems/fields/charged.h"
+#include "studies/charged_waves.h"
 #include "tests/charged_helpers.h"
 
 using Grid = vivp::sbp::SpaceGrid<double>;
@@ -28,40 +29,11 @@ Grid Line(int n) {
   return Grid(vivp::sbp::SpaceDerivative<double>::Periodic(2, n, 0, kLength));
 }
 
-// φ = g(x − x₁) e^{ikx} + g(x − x₂) e^{ikx}, π = −iωφ₁ + iωφ₂: a
-// right-moving particle and a left-moving antiparticle, x₂ = L − x₁, so the
-// grid's mirror symmetry makes the total charge vanish to round-off.
-struct Data {
-  std::vector<double> phi, pi;
-};
+using Data = vivp::studies::ChargedData;
 Data Pair(const Grid& g, double mass2) {
-  const double k = 0.8, omega = std::sqrt(mass2 + k * k);
-  Data d{std::vector<double>(g.points() * m),
-         std::vector<double>(g.points() * m)};
-  for (int j = 0; j < g.points(); ++j) {
-    const double x = g.x(j, 0);
-    const std::complex<double> wave = std::polar(1.0, k * x);
-    const std::complex<double> p1 =
-        0.5 * std::exp(-std::pow((x - 7) / 1.5, 2)) * wave;
-    const std::complex<double> p2 =
-        0.5 * std::exp(-std::pow((x - (kLength - 7)) / 1.5, 2)) * wave;
-    const std::complex<double> I(0, 1);
-    const std::complex<double> phi = p1 + p2,
-                               pi = -I * omega * p1 + I * omega * p2;
-    d.phi[j * m + System::kRe] = phi.real();
-    d.phi[j * m + System::kIm] = phi.imag();
-    d.pi[j * m + System::kRe] = pi.real();
-    d.pi[j * m + System::kIm] = pi.imag();
-  }
-  return d;
+  return vivp::studies::ChargedPair(g, mass2);
 }
-
-Model Qed() {
-  Model model;
-  model.mass2 = 1.0;
-  model.coupling = [](double) { return 0.7; };
-  return model;
-}
+Model Qed() { return vivp::studies::StudyQed(); }
 
 struct Run {
   bool ok;

@@ -53,6 +53,7 @@ struct ChargedWindowReport {
   double t0 = 0;
   long long iterations = 0;
   double residual = 0, gauss = 0;
+  int retries = 0;  // solved again with full Newton steps (never silent)
 };
 
 struct ChargedMarch {
@@ -137,8 +138,20 @@ ChargedMarch MarchCharged(const Model& model,
     const System sys(model, dbar, grid, phi, pi);
     std::vector<double> y = Start(sys, model, grid, phi, pi, t, o);
     solver.Invalidate();
-    const auto r = variational::Newton<double>(sys, y, o.newton, solver);
+    const std::vector<double> start = y;
+    auto r = variational::Newton<double>(sys, y, o.newton, solver);
     ChargedWindowReport rep{t, r.iterations, r.last_residual, 0};
+    if (!r.converged && o.newton.refinement_steps > 0) {
+      // Chord steps far from the solution (a first window whose data carry
+      // no Coulomb field: A₀ must build it) can diverge where full Newton
+      // steps converge: once more from the same start without them.
+      y = start;
+      variational::NewtonOptions full = o.newton;
+      full.refinement_steps = 0;
+      solver.Invalidate();
+      r = variational::Newton<double>(sys, y, full, solver);
+      rep = {t, rep.iterations + r.iterations, r.last_residual, 0, 1};
+    }
     if (!r.converged) {
       out.reason = "window " + std::to_string(w) +
                    " at t = " + std::to_string(t) +
