@@ -12,7 +12,7 @@
 // the part of A₀'s law that the action's χ determines). It splits into the
 // gauge field's part Hᵗ_i Hˣ_j (D⁻·E)_ij / e² and the matter's, minus
 // Hᵗ_i Hˣ_j times the action's charge density, and its size is measured
-// against the two parts that cancel in it, slice by slice.
+// against the terms that cancel in it, slice by slice.
 // The textbook law beside it is (D⁻·E)/e² − ρ with ρ = 2 Im(φ̄ D_0φ) at the
 // node, the covariant time difference of the action: they differ at
 // O(Δt^p) (Ipp & Müller 2018).
@@ -31,7 +31,7 @@ namespace vivp::action {
 // At each node (i·Nx + j) of a window.
 struct ChargedNodes {
   std::vector<double>
-      gauss_action;  // |G| / the slice's max(|gauge| + |matter|)
+      gauss_action;  // |G|/(Hᵗ Hˣ) over the slice's scale (below)
   std::vector<double> gauss_textbook;  // the same for (D⁻·E)/e² − ρ
   // χ's rows, Dᵀ G, relative to their two parts: the law as the action
   // states it for the unknown χ, before (Dᵀ)⁺ recovers G.
@@ -119,36 +119,40 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
   out.gauss_action.resize(nodes);
   out.gauss_textbook.resize(nodes);
   out.charge_action.resize(nodes);
+  // Each slice's scale is that of the terms that cancel in the law, as for
+  // electromagnetism (field_constraints.h): max |ρ| + Σ_b ‖D_b⁻‖∞ max |E_b|/e²,
+  // ‖D_b⁻‖∞ = 2/h_b.
   for (int i = 0; i < nt; ++i) {
     const double inv_g2 = s.model().InverseCouplingSquared(D.t(i));
-    double scale = 0, scale_tb = 0;
+    const std::size_t n0 = std::size_t(i) * nx;
     std::vector<double> div(nx);
+    double flux = 0, rho_max = 0, rho_tb_max = 0;
+    for (int b = 0; b < d; ++b) {
+      double e_max = 0;
+      for (int j = 0; j < nx; ++j)
+        e_max = std::max(e_max, std::abs(out.electric[(n0 + j) * d + b]));
+      flux += 2 / s.h(b) * e_max * inv_g2;
+    }
     for (int j = 0; j < nx; ++j) {
       double dv = 0;
-      for (int b = 0; b < d; ++b) {
-        const int back = s.Previous(j, b);
-        const std::size_t n = std::size_t(i) * nx;
-        dv +=
-            (out.electric[(n + j) * d + b] - out.electric[(n + back) * d + b]) /
-            s.h(b);
-      }
+      for (int b = 0; b < d; ++b)
+        dv += (out.electric[(n0 + j) * d + b] -
+               out.electric[(n0 + s.Previous(j, b)) * d + b]) /
+              s.h(b);
       div[j] = dv * inv_g2;
       const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
       // ρ_action = (D⁻·E)/e² − G/(Hᵗ Hˣ)
-      const double rho = div[j] - total(i, j) / weight;
-      out.charge_action[std::size_t(i) * nx + j] = rho;
-      scale = std::max(scale, std::abs(div[j]) + std::abs(rho));
-      scale_tb =
-          std::max(scale_tb, std::abs(div[j]) +
-                                 std::abs(out.charge[std::size_t(i) * nx + j]));
+      out.charge_action[n0 + j] = div[j] - total(i, j) / weight;
+      rho_max = std::max(rho_max, std::abs(out.charge_action[n0 + j]));
+      rho_tb_max = std::max(rho_tb_max, std::abs(out.charge[n0 + j]));
     }
+    const double scale = flux + rho_max, scale_tb = flux + rho_tb_max;
     for (int j = 0; j < nx; ++j) {
-      const std::size_t n = std::size_t(i) * nx + j;
       const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
-      out.gauss_action[n] =
+      out.gauss_action[n0 + j] =
           scale > 0 ? std::abs(total(i, j)) / weight / scale : 0.0;
-      out.gauss_textbook[n] =
-          scale_tb > 0 ? std::abs(div[j] - out.charge[n]) / scale_tb : 0.0;
+      out.gauss_textbook[n0 + j] =
+          scale_tb > 0 ? std::abs(div[j] - out.charge[n0 + j]) / scale_tb : 0.0;
     }
   }
   return out;

@@ -139,7 +139,10 @@ ChargedMarch MarchCharged(const Model& model,
     std::vector<double> y = Start(sys, model, grid, phi, pi, t, o);
     solver.Invalidate();
     const std::vector<double> start = y;
-    auto r = variational::Newton<double>(sys, y, o.newton, solver);
+    variational::NewtonOptions chord = o.newton;
+    if (chord.refinement_steps > 0)  // give up on chord steps early
+      chord.max_iterations = std::min(chord.max_iterations, 12);
+    auto r = variational::Newton<double>(sys, y, chord, solver);
     ChargedWindowReport rep{t, r.iterations, r.last_residual, 0};
     if (!r.converged && o.newton.refinement_steps > 0) {
       // Chord steps far from the solution (a first window whose data carry
