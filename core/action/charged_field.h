@@ -223,9 +223,8 @@ class ChargedFieldSystem : public ChargedLayout<d> {
     Accumulate(y, nullptr, &sink);
   }
 
-  // The single path's action Σ Hᵗ Hˣ ℒ at y. (The end connection is
-  // invariant only as the doubled action's difference of two paths; the
-  // rows, its derivatives, are invariant, or rotate with φ.)
+  // The single path's action Σ Hᵗ Hˣ ℒ at y (without the end connection,
+  // whose multipliers are not the data's).
   double Action(const double* y) const {
     double s = 0;
     Visit(y, [&](const LocalReal& t, double w, unsigned) { s += w * t.value; });

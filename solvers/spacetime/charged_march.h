@@ -10,9 +10,9 @@
 // velocity of A_b: the next window starts in the gauge A₀ = 0 at its first
 // node, the start that keeps the gauge from drifting for electromagnetism
 // (docs/gauge.md §5), and its own A₀ is an unknown again at every node.
-// χ's datum is 0. Newton starts from the leapfrog's path in the gauge
-// A₀ = 0 (charged_leapfrog.h), χ = 0, multipliers 0; no gauge condition
-// anywhere.
+// Newton starts from the leapfrog's path in the gauge A₀ = 0
+// (charged_leapfrog.h), χ = 0, multipliers 0, and holds χ past node 1
+// (the representative, charged_field.h); no gauge condition anywhere.
 //
 // Before the first window the data's total charge is checked: on a torus
 // Gauss's law makes every slice neutral, and charged data have no solution.
