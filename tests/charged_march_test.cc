@@ -182,7 +182,7 @@ Data Coulomb(const Grid& g, Data d, double g2) {
   for (int j = 0; j < g.points(); ++j) {
     const std::complex<double> p(d.phi[j * m], d.phi[j * m + 1]),
         v(d.pi[j * m], d.pi[j * m + 1]);
-    acc += g.axis(0).dx() * g2 * 2 * (std::conj(p) * v).imag();
+    acc += g.axis(0).dx() * g2 * vivp::action::ChargeDensity(p, v);
     e[j] = acc;
     mean += acc / g.points();
   }

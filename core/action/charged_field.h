@@ -46,6 +46,7 @@ class ChargedFieldSystem : public ChargedLayout<d> {
   using Layout::kRe;
   using Layout::m;
   using Scalar = double;
+  static constexpr int kSpaceDim = d;
 
   // phi0 and pi0 as field_system.h: per point j, (Re φ, Im φ, a_0 …, unused)
   // and (Re π, Im π, ȧ_0 …, unused). Every axis of grid periodic.
@@ -216,7 +217,7 @@ class ChargedFieldSystem : public ChargedLayout<d> {
     Visit(y, [&](const LocalReal& t, double w, unsigned part) {
       if (part & parts) AddTerm<NoSink>(t, w, f, nullptr);
     });
-    EndConnection<NoSink>(y, f, nullptr, nullptr, parts);
+    EndConnection<NoSink>(y, f, nullptr, parts);
   }
   template <class Sink>
   void Jacobian(const double* y, Sink& sink) const {
@@ -241,7 +242,7 @@ class ChargedFieldSystem : public ChargedLayout<d> {
     Visit(y, [&](const LocalReal& t, double w, unsigned) {
       AddTerm(t, w, f, sink);
     });
-    EndConnection(y, f, sink, nullptr, kAllTerms);
+    EndConnection(y, f, sink, kAllTerms);
     DataRows(y, f, sink);
   }
 
@@ -280,13 +281,13 @@ class ChargedFieldSystem : public ChargedLayout<d> {
     }
   }
 
-  // The end connection Σ_j Hˣ_j [λ3·x(N) + λ4·(Dx)(N)], covariant for φ:
-  // its derivatives in the node unknowns into f, the columns of the
-  // multipliers (and for φ the second derivatives) into the sink; value
-  // (if not null) gets the term itself. The rows at the multipliers'
-  // positions are the data (DataRows), not the derivatives in λ.
+  // The end connection Σ_j Hˣ_j [λ3·x(N) + λ4·(Dx)(N)] on ψ and Ã: its
+  // derivatives in the node unknowns into f, the columns of the
+  // multipliers (and for φ the second derivatives) into the sink. The rows
+  // at the multipliers' positions are the data (DataRows), not the
+  // derivatives in λ.
   template <class Sink>
-  void EndConnection(const double* y, double* f, Sink* sink, double* value,
+  void EndConnection(const double* y, double* f, Sink* sink,
                      unsigned parts) const {
     const auto& D = dt_.base();
     const int last = nt_ - 1;
@@ -307,7 +308,6 @@ class ChargedFieldSystem : public ChargedLayout<d> {
           for (int e = 0; e < 3; ++e) {
             if (f) f[xs[e]] += hx * cs[e] * y[l];
             if (sink) sink->Add(xs[e], l, hx * cs[e]);
-            if (value) *value += hx * cs[e] * y[l] * y[xs[e]];
           }
         };
         link(Lambda3(j, A(b)), last, 1.0);
@@ -334,8 +334,6 @@ class ChargedFieldSystem : public ChargedLayout<d> {
         const int lr = which == 0 ? Lambda3(j, kRe) : Lambda4(j, kRe);
         const int li = which == 0 ? Lambda3(j, kIm) : Lambda4(j, kIm);
         AddProjection(q, lr, li, y, hx, f, sink);
-        if (value)
-          *value += hx * (std::conj(Complex(y[lr], y[li])) * q.value).real();
       }
     }
   }

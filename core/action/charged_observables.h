@@ -66,7 +66,7 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
       const Complex phi(y[s.Phi(i, j, System::kRe)],
                         y[s.Phi(i, j, System::kIm)]);
       s.TimeDifference(y, i, j, true, q);
-      out.charge[n] = 2 * (std::conj(phi) * q.value).imag();
+      out.charge[n] = ChargeDensity(phi, q.value);
       out.modulus[n] = std::abs(phi);
       double e = std::norm(q.value) + s.model().Potential(std::norm(phi));
       double field = 0;
@@ -98,10 +98,11 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
     return rows;
   };
 
+  // χ's rows, of each part and of all terms.
+  const Eigen::MatrixXd rg = rows_of(System::kGauge),
+                        rm = rows_of(System::kMatter),
+                        rt = rows_of(System::kAllTerms);
   {  // χ's rows themselves, Dᵀ of the law: no inversion.
-    const Eigen::MatrixXd rg = rows_of(System::kGauge),
-                          rm = rows_of(System::kMatter),
-                          rt = rows_of(System::kAllTerms);
     out.gauss_rows.resize(nodes);
     for (int i = 0; i < nt; ++i) {
       double scale = 0;
@@ -115,7 +116,7 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
   // G from the sum of the rows, which cancel to round-off; its gauge
   // field's part is local, Hᵗ Hˣ (D⁻·E)/e², and the matter's part is the
   // rest.
-  const Eigen::MatrixXd total = lu.solve(rows_of(System::kAllTerms));
+  const Eigen::MatrixXd total = lu.solve(rt);
   out.gauss_action.resize(nodes);
   out.gauss_textbook.resize(nodes);
   out.charge_action.resize(nodes);

@@ -35,6 +35,12 @@ inline void CheckFinite(const std::string& what, const std::vector<double>& v) {
                                   std::to_string(k));
 }
 
+// The charge density 2 Im(φ̄ v) of φ with (covariant) velocity v: the
+// action's δ/δA₀ of |D_0φ|², with the sign of Gauss's law (D⁻·E)/e² = ρ.
+inline double ChargeDensity(Complex phi, Complex v) {
+  return 2 * (std::conj(phi) * v).imag();
+}
+
 // Per node: Re φ, Im φ, A_0 … A_{d−1} on the links, χ.
 template <int d>
 struct ChargedLayout {

@@ -56,7 +56,7 @@ double SliceGauss(const sbp::SpaceGrid<double>& grid,
                                    s.x[j * L::m + L::kIm]);
     const std::complex<double> dphi(s.v[j * L::m + L::kRe],
                                     s.v[j * L::m + L::kIm]);
-    const double rho = 2 * (std::conj(phi) * dphi).imag();
+    const double rho = action::ChargeDensity(phi, dphi);
     worst = std::max(worst, std::abs(div - rho));
     scale = std::max(scale, std::abs(div) + std::abs(rho));
   }

@@ -75,7 +75,7 @@ std::pair<double, double> DataCharge(const sbp::SpaceGrid<double>& grid,
                                  phi[j * System::m + System::kIm]);
     const std::complex<double> v(pi[j * System::m + System::kRe],
                                  pi[j * System::m + System::kIm]);
-    const double rho = 2 * (std::conj(p) * v).imag();
+    const double rho = action::ChargeDensity(p, v);
     q += grid.NormWeight(j) * rho;
     scale += grid.NormWeight(j) * std::abs(rho);
   }
@@ -97,7 +97,7 @@ std::vector<double> Start(const System& sys, const Model& model,
   ChargedSliceState s{phi, pi};
   for (int i = 0; i < o.window; ++i) {
     if (i > 0 && o.predictor_substeps > 0)
-      LeapfrogCharged<System::kChi - 2>(
+      LeapfrogCharged<System::kSpaceDim>(
           model, grid, t + (i - 1) * o.dt, o.dt / o.predictor_substeps,
           o.predictor_substeps, ChargedLeapfrog::kCanonical, s,
           [](double, const ChargedSliceState&) {});
@@ -134,7 +134,6 @@ ChargedMarch MarchCharged(const Model& model,
   for (int w = 0; w < o.windows; ++w) {
     const sbp::RegularizedOperator<double> dbar(sbp::MakeOperator<double>(
         o.time_operator, o.window, t, t + o.dt * (o.window - 1)));
-    for (int j = 0; j < grid.points(); ++j) phi[j * m + System::kChi] = 0;
     const System sys(model, dbar, grid, phi, pi);
     std::vector<double> y = Start(sys, model, grid, phi, pi, t, o);
     solver.Invalidate();
