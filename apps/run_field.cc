@@ -79,22 +79,27 @@ nlohmann::json Diagnostics(const scene::FieldRun& run, std::ostream& human) {
   return d;
 }
 
-nlohmann::json AxisJson(const scene::FieldAxis& x) {
+// A charged field's spatial differences are its links' covariant forward
+// differences (core/action/charged_terms.h), whatever space_order says.
+nlohmann::json AxisJson(const scene::FieldAxis& x, bool links) {
   const auto dx = x.Space();
-  return {
-      {"operator", dx.name()}, {"order", dx.order()}, {"boundary", x.boundary},
-      {"points", dx.points()}, {"x0", x.x0},          {"x1", x.x1},
-      {"dx", dx.dx()}};
+  return {{"operator", links ? "links" : dx.name()},
+          {"order", links ? 2 : dx.order()},
+          {"boundary", x.boundary},
+          {"points", dx.points()},
+          {"x0", x.x0},
+          {"x1", x.x1},
+          {"dx", dx.dx()}};
 }
 
 nlohmann::json GridJson(const scene::FieldScene& s,
                         const scene::FieldRun& run) {
   const auto& sol = run.solution;
-  nlohmann::json space = AxisJson(s);
+  nlohmann::json space = AxisJson(s, s.Charged());
   if (s.Dim() > 1) {
     space = {{"axes", nlohmann::json::array()}, {"points", s.GridPoints()}};
     for (int a = 0; a < s.Dim(); ++a)
-      space["axes"].push_back(AxisJson(s.Axis(a)));
+      space["axes"].push_back(AxisJson(s.Axis(a), s.Charged()));
   }
   return {{"space", space},
           {"time",
@@ -171,8 +176,9 @@ std::string Ends(const scene::FieldAxis& s) {
 std::string SpaceText(const scene::FieldScene& s) {
   std::ostringstream o;
   auto axis = [&](const scene::FieldAxis& x) {
-    o << x.Space().name() << " on [" << Rounded(x.x0) << ", " << Rounded(x.x1)
-      << (x.boundary == "periodic" ? ")" : "]") << Ends(x);
+    o << (s.Charged() ? "links" : x.Space().name()) << " on [" << Rounded(x.x0)
+      << ", " << Rounded(x.x1) << (x.boundary == "periodic" ? ")" : "]")
+      << Ends(x);
   };
   if (s.Dim() == 1) {
     axis(s);

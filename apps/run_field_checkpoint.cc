@@ -22,6 +22,10 @@ void CheckFieldRunControl(const scene::FieldScene& s,
     throw UsageError(
         "--stop-after stops at a checkpoint; give --checkpoint FILE too");
   if (!any) return;
+  if (s.Charged())
+    throw UsageError(
+        "--checkpoint and --resume are not built for a charged field's "
+        "march; run it without them");
   if (s.method.tolerance.enabled())
     throw UsageError(
         "--checkpoint and --resume take uniform marches; this scene's "

@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "apps/run_field.h"
+#include "scene/charged_scene.h"
 
 namespace vivp::apps {
 
@@ -14,6 +15,7 @@ namespace {
 
 // The names of the values of one spatial point in the field files.
 std::vector<std::string> PointColumns(const scene::FieldScene& s) {
+  if (s.Charged()) return scene::ChargedValueNames(s.Dim());
   std::vector<std::string> c;
   for (const char* q : {"phi", "phi_t"}) {
     if (std::string(q) == "phi_t" && !s.output.phi_t) break;

@@ -5,6 +5,7 @@
 
 #include "apps/run_field.h"
 #include "report/field_plots.h"
+#include "scene/charged_scene.h"
 
 namespace vivp::apps {
 
@@ -64,19 +65,26 @@ std::vector<std::string> WriteFieldPlots(const std::filesystem::path& dir,
   const std::string title = s.title.empty() ? s.source : s.title;
   const report::FieldSeries series{
       .t = sol.t, .x = run.x, .phi = sol.phi, .components = s.components};
-  // A field on a grid: its slices are drawn by WriteSlicePictures.
+  // A field on a grid: its slices are drawn by WriteSlicePictures. A
+  // charged field's values are |φ| (≥ 0, its own range), E and ρ.
+  const auto charged = scene::ChargedValueLabels(s.Dim());
   for (int a = 0; a < s.components && s.Dim() == 1; ++a) {
     const std::string stem = a == 0 ? "field" : "field_" + std::to_string(a);
-    const std::string label =
-        s.components == 1 ? "φ" : "φ_" + std::to_string(a);
+    const std::string label = s.Charged()         ? charged.at(std::size_t(a))
+                              : s.components == 1 ? "φ"
+                                                  : "φ_" + std::to_string(a);
     draw(stem + ".png", [&] {
       report::HeatMap(dir, stem, series,
-                      {.title = title, .label = label, .component = a});
+                      {.title = title,
+                       .label = label,
+                       .component = a,
+                       .symmetric = !(s.Charged() && a == 0)});
     });
   }
   std::vector<double> times;
   for (int k = 0; k <= 4; ++k) times.push_back(s.t_end * k / 4.0);
-  if (s.Dim() == 1)
+  // Snapshots share one axis: not for |φ|, E and ρ together.
+  if (s.Dim() == 1 && !s.Charged())
     draw("snapshots.png",
          [&] { report::Snapshots(dir, "snapshots", series, times, title); });
   for (std::size_t c = 0; c < run.columns.size(); ++c) {

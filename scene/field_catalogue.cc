@@ -46,8 +46,15 @@ const std::vector<std::string>& FieldDiagnosticNames() {
 }
 
 bool FieldScene::Gauge() const {
+  return !Charged() &&
+         std::any_of(terms.begin(), terms.end(), [](const ListedEffect& e) {
+           return e.type->name == "maxwell";
+         });
+}
+
+bool FieldScene::Charged() const {
   return std::any_of(terms.begin(), terms.end(), [](const ListedEffect& e) {
-    return e.type->name == "maxwell";
+    return e.type->name == "scalar_qed" || e.type->name == "abelian_higgs";
   });
 }
 
@@ -207,7 +214,14 @@ std::string FieldSchemaHelp() {
        "  potentials A₀ … A_d, linear_solver = \"fourier\", windows of 16; "
        "profile\n"
        "  plane_wave (k, amplitude); diagnostics gauss, gauss_textbook "
-       "(docs/gauge.md).\n\n"
+       "(docs/gauge.md).\n"
+       "  'maxwell' + 'scalar_qed' (+ 'abelian_higgs'): a charged field on "
+       "links, one axis,\n"
+       "  periodic; profile charge_pair (center, k, amplitude, width, "
+       "electric); windows\n"
+       "  of equal Δt; diagnostics energy, charge, gauss, gauss_textbook; "
+       "field.csv holds\n"
+       "  abs_phi, E_x, rho (docs/field_scenes.md §8).\n\n"
        "Terms (parameter = default):\n";
   for (const auto& t : FieldTermCatalogue()) {
     h << "  " << t.name << ": " << t.formula;

@@ -7,6 +7,7 @@
 #include "core/action/field_charges.h"
 #include "core/action/field_constraints.h"
 #include "core/sbp/builder.h"
+#include "scene/charged_scene.h"
 #include "solvers/distributed/composed.h"
 #include "solvers/spacetime/composed.h"
 
@@ -189,6 +190,13 @@ FieldRun Run(const FieldScene& s,
 FieldRun RunFieldScene(const FieldScene& s,
                        const std::function<void(int, int, double)>& on_window,
                        const FieldRunHooks& hooks) {
+  if (s.Charged()) {
+    if (hooks.comm && hooks.comm->size() > 1)
+      throw std::invalid_argument(
+          "a charged field is not built across ranks: run it on one process, "
+          "without mpirun");
+    return RunChargedScene(s, on_window);
+  }
   if (s.Gauge())
     return s.Dim() == 3 ? Run<3>(fields::MaxwellIn<3>{}, s, on_window, hooks)
                         : Run<2>(fields::MaxwellIn<2>{}, s, on_window, hooks);

@@ -159,8 +159,14 @@ struct FieldScene : FieldAxis {
   std::vector<std::string> warnings;
 
   bool Wants(const std::string& diagnostic) const;
-  // A gauge field: the 'maxwell' term, solved as fields::MaxwellIn<d>.
+  // A gauge field: the 'maxwell' term alone, solved as
+  // fields::MaxwellIn<d>.
   bool Gauge() const;
+  // Charged matter: 'scalar_qed' (+ 'abelian_higgs') with 'maxwell', solved
+  // on links (charged_scene.h); phi0 and phi_t0 then hold (Re φ, Im φ, A_b)
+  // and (Re π, Im π, ∂_tA_b) per point, and `components` counts the values
+  // written per point (|φ|, E_b, ρ).
+  bool Charged() const;
   // The ends' data for the solver (constant in time); on a grid of d > 1
   // axes, Neumann faces.
   spacetime::FieldBoundary Boundary() const;

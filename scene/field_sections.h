@@ -25,6 +25,17 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
 void ReadFieldOutput(const TomlReader& r, const toml::table& root,
                      FieldScene& s);
 
+// Charged matter (read_charged.cc): the terms and grid of a scene with
+// 'scalar_qed' or 'abelian_higgs' (after ReadTerms), its [method] (the
+// table `t`; after the operator is read) and its [time] points (the table
+// `t`), whole windows of equal Δt.
+void ReadChargedField(const TomlReader& r, const toml::table& root,
+                      FieldScene& s);
+void ReadChargedMethod(const TomlReader& r, const toml::table& t,
+                       FieldScene& s);
+void ReadChargedPoints(const TomlReader& r, const toml::table& t,
+                       FieldScene& s);
+
 // The field scene of a parsed TOML file that has a [field] table.
 FieldScene ReadFieldScene(const TomlReader& r, const toml::table& root);
 

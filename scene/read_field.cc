@@ -24,9 +24,9 @@ void ReadGaugeField(const TomlReader& r, const toml::table& root,
     if (e.type->name != "maxwell")
       r.Fail(e.line, e.column,
              "term " + Quote(e.type->name) +
-                 " cannot join 'maxwell': charged matter and other terms "
-                 "with a gauge field are not built yet",
-             "expected the 'maxwell' term alone");
+                 " cannot join 'maxwell': a gauge field's matter is "
+                 "'scalar_qed' (charged, on links), not a nodal term",
+             "expected the 'maxwell' term alone, or with 'scalar_qed'");
   if (s.Dim() == 1)
     r.Fail(maxwell->line, maxwell->column,
            "term 'maxwell' on one axis has no waves and no charges: nothing "
@@ -77,7 +77,10 @@ void ReadTerms(const TomlReader& r, const toml::table& root, FieldScene& s) {
              "expected components = 1, or a 'mass', 'phi4' or 'quartic' term");
     s.terms.push_back(spec);
   }
-  if (s.Gauge()) ReadGaugeField(r, root, s);
+  if (s.Charged())
+    ReadChargedField(r, root, s);
+  else if (s.Gauge())
+    ReadGaugeField(r, root, s);
   if (std::none_of(s.terms.begin(), s.terms.end(),
                    [](const ListedEffect& e) { return e.type->kinetic; }))
     r.Fail(s.terms.front().line, s.terms.front().column,
@@ -92,6 +95,7 @@ void ReadFieldMethod(const TomlReader& r, const toml::table& root,
               {"operator", "window_points", "tolerance", "linear_solver"});
   if (const toml::node* n = t.get("operator"))
     s.method.op = r.Choice(*n, "operator", sbp::OperatorNames());
+  if (s.Charged()) return ReadChargedMethod(r, t, s);
   if (const toml::node* n = t.get("tolerance"))
     s.method.tolerance = ReadTolerance(r, *n);
   // A gauge field's window is singular along the gauge: only the Fourier
@@ -177,6 +181,7 @@ void ReadFieldTime(const TomlReader& r, const toml::table& root,
   if (!(s.t_end > 0))
     r.Fail(end, "end = " + FormatNumber(s.t_end) + " is not after 0",
            "expected end > 0 (a field scene starts at t = 0)");
+  if (s.Charged()) return ReadChargedPoints(r, t, s);
   const long long slice = s.GridPoints() * s.components;
   const long long minimum = sbp::Table(s.method.op).min_points;
   const spacetime::WindowLinearSolver linear =
@@ -298,11 +303,11 @@ void ReadFieldPictures(const TomlReader& r, const toml::table& t,
 void ReadSpectra(const TomlReader& r, const toml::table& t, FieldScene& s) {
   const toml::node* n = t.get("spectra");
   if (!n) return;
-  if (s.Gauge())
+  if (s.Gauge() || s.Charged())
     r.Fail(*n,
-           "'spectra' are of φ, and a 'maxwell' field's φ is its potentials, "
-           "which depend on the gauge",
-           "expected no spectra (heat maps show |E|)");
+           "'spectra' are of φ, and a gauge field's potentials (and a "
+           "charged φ's phase) depend on the gauge",
+           "expected no spectra (heat maps show |E|, or |φ| and E)");
   for (int a = 0; a < s.Dim(); ++a)
     if (s.Axis(a).boundary != "periodic")
       r.Fail(*n,
@@ -337,22 +342,28 @@ void ReadFieldOutput(const TomlReader& r, const toml::table& root,
       r.Fail(*n, "'phi_t' must be true or false, got " + TypeName(*n),
              "expected phi_t = true (write φ_t next to φ) or false");
     s.output.phi_t = *n->value<bool>();
+    if (s.output.phi_t && s.Charged())
+      r.Fail(*n,
+             "a charged field writes |φ|, E and ρ per point, which are gauge "
+             "invariant; φ_t is not",
+             "expected no phi_t");
   }
   if (const toml::node* n = t.get("diagnostics"))
     s.output.diagnostics = ReadDiagnosticList(
         r, *n, FieldDiagnosticNames(),
         [&](const toml::node& e, const std::string& d) {
-          if ((d == "gauss" || d == "gauss_textbook") && !s.Gauge())
+          if ((d == "gauss" || d == "gauss_textbook") && !s.Gauge() &&
+              !s.Charged())
             r.Fail(e,
                    "diagnostic " + Quote(d) +
                        " is Gauss's law of a gauge field (A₀'s equation)",
                    "expected a 'maxwell' term, or no " + Quote(d));
-          if (d == "momentum" && s.Gauge())
+          if (d == "momentum" && (s.Gauge() || s.Charged()))
             r.Fail(e,
                    "diagnostic 'momentum' is the canonical momentum of the "
                    "potentials, which is not gauge invariant",
                    "expected energy, error, gauss or gauss_textbook");
-          if (d == "charge" && s.components != 2)
+          if (d == "charge" && s.components != 2 && !s.Charged())
             r.Fail(e,
                    "diagnostic 'charge' is the U(1) charge of two components",
                    "expected components = 2, or no 'charge'");

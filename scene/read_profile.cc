@@ -186,12 +186,15 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
                  const std::filesystem::path& base, FieldScene& s) {
   const toml::table& t = r.Table(root, "initial", true);
   const bool grid = s.Dim() > 1;
-  const auto& names = grid ? ProfileNamesNd() : FieldProfileNames();
+  const auto& names = s.Charged() ? ChargedProfileNames()
+                      : grid      ? ProfileNamesNd()
+                                  : FieldProfileNames();
   const toml::node& p =
       r.Require(t, "initial", "profile", "profile = one of " + Join(names));
   s.initial.profile = r.Choice(p, "profile", names);
-  const auto& keys =
-      grid ? ProfileKeysNd(s.initial.profile) : KeysOf(s.initial.profile);
+  const std::vector<ProfileKey> keys = s.Charged() ? ChargedProfileKeys(s)
+                                       : grid ? ProfileKeysNd(s.initial.profile)
+                                              : KeysOf(s.initial.profile);
   std::vector<std::string> valid = {"profile", "allow_jump"};
   for (const auto& k : keys) valid.push_back(k.name);
   if (s.initial.profile == "csv") valid.push_back("file");
@@ -215,8 +218,11 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
     return;
   }
   const ProfileFormulas formulas =
-      grid ? MakeProfileNd(r, t, s) : MakeProfile(r, t, s);
+      s.Charged() ? MakeChargedProfile(ProfileValues{r, t, s}, s)
+      : grid      ? MakeProfileNd(r, t, s)
+                  : MakeProfile(r, t, s);
   ComputeInitialData(r, p, formulas.initial, s);
+  if (s.Charged()) CheckNeutral(r, p, s);
   if (s.boundary == "periodic" ||
       std::any_of(s.cross_axes.begin(), s.cross_axes.end(),
                   [](const FieldAxis& a) { return a.boundary == "periodic"; }))

@@ -94,7 +94,7 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
   Refused(
       s.RunScene("joined", Maxwell("points = 16\n",
                                    "[[term]]\ntype = \"maxwell\"\n" + kinetic)),
-      {"kinetic", "maxwell", "not built yet"});
+      {"kinetic", "maxwell", "scalar_qed"});
   Refused(s.RunScene("interval", Maxwell("points = 16\nboundary = "
                                          "[\"periodic\", \"natural\"]\n")),
           {"periodic grids only", "axis y"});

@@ -20,6 +20,8 @@
 //   phi4          L −= ¼λ(|φ|² − v²)²
 //   quartic       L −= ¼λ|φ|⁴
 //   maxwell       L += ½|E|² − ½|F|²          (the potentials; alone)
+//   scalar_qed    L += |D_tφ|² − |∇_Aφ|² − m²|φ|² with maxwell/e(t)²
+//   abelian_higgs L −= (λ/2)(|φ|² − v²)²      (with scalar_qed)
 //
 // kinetic + gradient + mass is Klein–Gordon, + sine_gordon sine-Gordon,
 // + phi4 the φ⁴ theory, and with two components kinetic + gradient + mass +
@@ -133,12 +135,13 @@ struct Quartic {
 
 // Electromagnetism, −¼F_μνF^μν (gauge.h): the field's components are the
 // potentials (A₀, A₁ … A_d), and the term stands alone (a scene with it is
-// solved as fields::MaxwellIn<d>, whose A₀ has no time derivative; charged
-// matter is not built yet).
+// solved as fields::MaxwellIn<d>, whose A₀ has no time derivative; with
+// 'scalar_qed' the scene is solved on links, core/action/charged_field.h).
 struct Maxwell {
   static EffectSpec<Maxwell> Spec() {
     return {"maxwell",
-            "L += ½|E|² − ½|F|², E = −∇A₀ − ∂_tA  (components A₀ … A_d, alone)",
+            "L += ½|E|² − ½|F|², E = −∇A₀ − ∂_tA  (components A₀ … A_d; "
+            "alone, or with 'scalar_qed')",
             {},
             /*kinetic=*/true};
   }
@@ -151,13 +154,56 @@ struct Maxwell {
   }
 };
 
+// Charged matter (charged.h): a complex scalar of unit charge under D_μ =
+// ∂_μ − iA_μ with the coupling e(t) = e(1 + a sin ωt) in front of the
+// 'maxwell' term, L = (E² − B²)/(2e(t)²) + |D_tφ|² − |∇_Aφ|² − m²|φ|². Not
+// a nodal density: a scene with it is solved as core/action/charged_field.h
+// on links, with 'maxwell' and no other terms but 'abelian_higgs'.
+struct ScalarQed {
+  double charge = 1.0, modulation = 0.0, frequency = 0.0, mass = 0.0;
+  static EffectSpec<ScalarQed> Spec() {
+    using K = ParameterKind;
+    return {
+        "scalar_qed",
+        "L += |D_tφ|² − |∇_Aφ|² − m²|φ|², D = ∂ − iA, with 'maxwell' as "
+        "(E² − B²)/(2e(t)²), e(t) = e(1 + a sin ωt)",
+        {{"charge", K::kPositive, &ScalarQed::charge, "coupling e"},
+         {"modulation", K::kReal, &ScalarQed::modulation, "a of e(t), |a| < 1"},
+         {"frequency", K::kNonNegative, &ScalarQed::frequency, "ω of e(t)"},
+         {"mass", K::kNonNegative, &ScalarQed::mass, "mass m"}},
+        /*kinetic=*/true};
+  }
+  template <int M, int d, class T>
+  T Density(const T*, const T*, const T*) const {
+    return T(0.0);  // on links (charged_field.h), not a nodal density
+  }
+};
+
+// The Abelian Higgs potential of a 'scalar_qed' field; critical coupling
+// (Bogomolny) is λ = e².
+struct AbelianHiggs {
+  double lambda = 1.0, v = 1.0;
+  static EffectSpec<AbelianHiggs> Spec() {
+    using K = ParameterKind;
+    return {"abelian_higgs",
+            "L −= (λ/2)(|φ|² − v²)²  (with 'scalar_qed')",
+            {{"lambda", K::kNonNegative, &AbelianHiggs::lambda, "coupling λ"},
+             {"v", K::kReal, &AbelianHiggs::v, "vacuum |φ| = v"}}};
+  }
+  template <int M, int d, class T>
+  T Density(const T*, const T*, const T*) const {
+    return T(0.0);  // with 'scalar_qed' (charged_field.h)
+  }
+};
+
 }  // namespace terms
 
 // Every term a field scene may list; a new term is its struct above and its
 // name here.
-using FieldTerm = std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
-                               terms::SineGordon, terms::Phi4, terms::Quartic,
-                               terms::Maxwell>;
+using FieldTerm =
+    std::variant<terms::Kinetic, terms::Gradient, terms::Mass,
+                 terms::SineGordon, terms::Phi4, terms::Quartic, terms::Maxwell,
+                 terms::ScalarQed, terms::AbelianHiggs>;
 
 template <int M, int d = 1>
 struct ComposedDensity {

@@ -82,6 +82,22 @@ std::pair<double, double> DataCharge(const sbp::SpaceGrid<double>& grid,
   return {q, scale};
 }
 
+// Why data (φ, π) cannot be marched on a torus, or "" when they are
+// neutral: Gauss's law makes every slice's total charge vanish, so a net
+// charge beyond 1e-10 of Σ|ρ| (the round-off of mirrored packets is far
+// below it) has no solution.
+template <class System>
+std::string NetChargeReason(const sbp::SpaceGrid<double>& grid,
+                            const std::vector<double>& phi,
+                            const std::vector<double>& pi) {
+  const auto [charge, scale] = DataCharge<System>(grid, phi, pi);
+  if (std::abs(charge) <= 1e-10 * std::max(scale, 1e-300)) return "";
+  return "the initial slice carries a total charge " + std::to_string(charge) +
+         " (of Σ|ρ| = " + std::to_string(scale) +
+         "); on a periodic grid Gauss's law makes every slice neutral: give "
+         "pairs of opposite charge";
+}
+
 // Newton's start for a window from the handed state: the leapfrog in the
 // gauge A₀ = 0 (charged_leapfrog.h) at the nodes, `predictor_substeps`
 // steps per node spacing, or the straight path when that is 0; χ = 0 and
@@ -120,15 +136,8 @@ ChargedMarch MarchCharged(const Model& model,
   using System = action::ChargedFieldSystem<Model, d>;
   constexpr int m = System::m;
   ChargedMarch out;
-  const auto [charge, scale] = DataCharge<System>(grid, phi, pi);
-  if (std::abs(charge) > 1e-10 * std::max(scale, 1e-300)) {
-    out.reason = "the initial slice carries a total charge " +
-                 std::to_string(charge) +
-                 " (of Σ|ρ| = " + std::to_string(scale) +
-                 "); on a periodic grid Gauss's law makes every slice "
-                 "neutral: give pairs of opposite charge";
-    return out;
-  }
+  out.reason = NetChargeReason<System>(grid, phi, pi);
+  if (!out.reason.empty()) return out;
   NormalEquationsSolver solver;
   double t = o.t0;
   for (int w = 0; w < o.windows; ++w) {
