@@ -5,12 +5,14 @@
 // z-plane.
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <span>
 #include <sstream>
 
 #include "apps/run_field.h"
 #include "report/field_plots_2d.h"
+#include "scene/charged_scene.h"
 #include "scene/field_hdf5.h"
 
 namespace vivp::apps {
@@ -68,6 +70,38 @@ report::Slice2d PlaneOf(const scene::FieldScene& s,
   return out;
 }
 
+// vortices.csv (t, x, y, winding of every vortex of every kept slice) and
+// tracks.png, of a charged field on two axes.
+std::vector<std::string> WriteVortexTracks(const fs::path& dir,
+                                           const scene::FieldScene& s,
+                                           const scene::FieldRun& run,
+                                           std::vector<std::string>& warnings) {
+  std::vector<std::string> files;
+  {
+    std::ofstream f(dir / "vortices.csv");
+    f << "t,x,y,winding\n" << std::setprecision(17);
+    for (const auto& v : run.vortices)
+      f << v.t << "," << v.x << "," << v.y << "," << v.winding << "\n";
+    if (!f) throw std::runtime_error("cannot write vortices.csv");
+    files.push_back("vortices.csv");
+  }
+  std::vector<report::TrackPoint> points;
+  for (const auto& v : run.vortices)
+    points.push_back({v.t, v.x, v.y, v.winding});
+  try {
+    const auto grid = s.Grid();
+    const double hx = grid.axis(0).dx(), hy = grid.axis(1).dx();
+    report::VortexTracks(
+        dir, "tracks", points, s.x0, s.x0 + hx * s.space_points, s.Axis(1).x0,
+        s.Axis(1).x0 + hy * s.Axis(1).space_points,
+        (s.title.empty() ? s.source : s.title) + ": vortex tracks");
+    files.push_back("tracks.png");
+  } catch (const std::exception& e) {
+    warnings.push_back(std::string("no tracks.png: ") + e.what());
+  }
+  return files;
+}
+
 }  // namespace
 
 std::size_t Nearest(const std::vector<double>& t, double time) {
@@ -89,19 +123,25 @@ nlohmann::json WriteFieldHdf5(const fs::path& dir, const scene::FieldScene& s,
     const auto at = std::ptrdiff_t(k * per);
     phi.insert(phi.end(), run.solution.phi.begin() + at,
                run.solution.phi.begin() + at + std::ptrdiff_t(per));
-    phi_t.insert(phi_t.end(), run.solution.phi_t.begin() + at,
-                 run.solution.phi_t.begin() + at + std::ptrdiff_t(per));
+    if (!s.Charged())
+      phi_t.insert(phi_t.end(), run.solution.phi_t.begin() + at,
+                   run.solution.phi_t.begin() + at + std::ptrdiff_t(per));
   }
-  // φ_t is always written: a slice of an HDF5 file is a restartable state.
+  // φ_t is written but for a charged field: a slice of an HDF5 file is a
+  // restartable state, and a charged field's values (|φ|, E, ρ) are not.
   scene::WriteFieldSlices((dir / "field.h5").string(), grid, m, t, phi, phi_t);
   std::vector<long long> shape = {(long long)slices.size()};
   for (int a = grid.dim() - 1; a >= 0; --a) shape.push_back(grid.points(a));
   shape.push_back(m);
+  nlohmann::json datasets = {"t", "phi", "phi_t"};
+  if (s.Charged()) datasets = {"t", "phi"};
   return {{"file", "field.h5"},
           {"format", "hdf5"},
           {"slices", slices.size()},
           {"points", grid.points()},
-          {"datasets", {"t", "phi", "phi_t"}},
+          {"datasets", datasets},
+          {"values", s.Charged() ? scene::ChargedValueNames(s.Dim())
+                                 : std::vector<std::string>{}},
           {"shape", shape},
           {"order",
            "datasets /phi and /phi_t of shape slices × N_{d−1} × … × N_0 × "
@@ -123,8 +163,9 @@ std::vector<std::string> WriteSlicePictures(
           ? " (plane z = " +
                 std::to_string(grid.axis(2).x(grid.points(2) / 2)) + ")"
           : "";
-  const std::string label = s.Gauge() ? "|E|" : "φ";
-  const bool symmetric = !s.Gauge();  // |E| ≥ 0: its own range
+  const std::string label = s.Gauge() ? "|E|" : s.Charged() ? "|φ|" : "φ";
+  // |E| and |φ| ≥ 0: their own range.
+  const bool symmetric = !s.Gauge() && !s.Charged();
   pictures = {{"heat_maps", nlohmann::json::array()}};
   for (std::size_t i = 0; i < s.output.heat_maps.size(); ++i) {
     const std::size_t k = Nearest(run.solution.t, s.output.heat_maps[i]);
@@ -139,6 +180,11 @@ std::vector<std::string> WriteSlicePictures(
     } catch (const std::exception& e) {
       warnings.push_back("no " + stem + ".png: " + e.what());
     }
+  }
+  if (!run.vortices.empty()) {
+    for (const auto& f : WriteVortexTracks(dir, s, run, warnings))
+      files.push_back(f);
+    pictures["tracks"] = "tracks.png";
   }
   if (!s.output.animation) return files;
   try {

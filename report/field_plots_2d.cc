@@ -255,4 +255,41 @@ fs::path SliceAnimation(const fs::path& dir, const std::string& stem,
   return RenderGif(dir, stem, style, delay_centiseconds, gp.str());
 }
 
+fs::path VortexTracks(const fs::path& dir, const std::string& stem,
+                      const std::vector<TrackPoint>& points, double x0,
+                      double x1, double y0, double y1,
+                      const std::string& title) {
+  if (points.empty())
+    throw std::invalid_argument("vortex tracks: no vortex was found");
+  if (!(x1 > x0 && y1 > y0))
+    throw std::invalid_argument("vortex tracks: the box is empty");
+  std::vector<std::vector<double>> plus, minus;
+  double t0 = points.front().t, t1 = t0;
+  for (const auto& p : points) {
+    (p.winding > 0 ? plus : minus).push_back({p.x, p.y, p.t});
+    t0 = std::min(t0, p.t);
+    t1 = std::max(t1, p.t);
+  }
+  Figure fig(dir, stem, 800, 700);
+  auto& gp = fig.script();
+  gp << "set encoding utf8\nset title " << Quoted(title) << "\n"
+     << kViridisPalette << "set cblabel 't'\nset cbrange [" << t0 << ":"
+     << (t1 > t0 ? t1 : t0 + 1) << "]\nset xlabel 'x'\nset ylabel 'y'\n"
+     << "set xrange [" << x0 << ":" << x1 << "]\nset yrange [" << y0 << ":"
+     << y1 << "]\nset size ratio -1\nset grid\nset key top left\nplot ";
+  bool first = true;
+  for (auto* set : {&plus, &minus}) {
+    if (set->empty()) continue;
+    const bool vortex = set == &plus;
+    const auto data =
+        fig.Data(vortex ? "vortices" : "antivortices", *set, "x y t");
+    gp << (first ? "" : ", ") << "'" << data << "' using 1:2:3 with points pt "
+       << (vortex ? 7 : 6) << " ps 0.8 palette title "
+       << Quoted(vortex ? "vortex" : "antivortex");
+    first = false;
+  }
+  gp << "\n";
+  return fig.Render();
+}
+
 }  // namespace vivp::report

@@ -70,4 +70,19 @@ std::filesystem::path SliceAnimation(const std::filesystem::path& dir,
                                      int delay_centiseconds = 8,
                                      int max_frames = 120);
 
+// Vortex tracks: where the vortices were at each time (the zeros of φ,
+// core/action/vortex_tracks.h), drawn on the box [x0, x1] × [y0, y1] as
+// points coloured by t, vortices (winding > 0) as filled dots and
+// antivortices as open circles. Writes STEM_*.dat, STEM.gp and STEM.png;
+// throws std::invalid_argument on no points or an empty box.
+struct TrackPoint {
+  double t = 0, x = 0, y = 0;
+  int winding = 0;
+};
+std::filesystem::path VortexTracks(const std::filesystem::path& dir,
+                                   const std::string& stem,
+                                   const std::vector<TrackPoint>& points,
+                                   double x0, double x1, double y0, double y1,
+                                   const std::string& title = "");
+
 }  // namespace vivp::report

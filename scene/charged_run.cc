@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/action/vortex_tracks.h"
 #include "core/sbp/builder.h"
 #include "scene/charged_scene.h"
 #include "scene/field_profile.h"
@@ -123,6 +124,26 @@ void AppendHanded(const spacetime::ChargedSliceState& handed,
   }
 }
 
+// The vortices of node i of a window (its own slice of y), or of the
+// handed state at the window's end.
+template <class System>
+void Track(const System& sys, const std::vector<double>& y, int i,
+           const spacetime::ChargedSliceState* handed, double t,
+           FieldRun& run) {
+  std::vector<double> slice;
+  const double* x = handed ? handed->x.data() : nullptr;
+  if (!handed) {
+    const int nx = sys.space_points();
+    slice.resize(std::size_t(nx) * System::m);
+    for (int j = 0; j < nx; ++j)
+      for (int a = 0; a < System::m; ++a)
+        slice[std::size_t(j) * System::m + a] = y[sys.Phi(i, j, a)];
+    x = slice.data();
+  }
+  for (const auto& v : action::FindVortices(sys.space_grid(), x))
+    run.vortices.push_back({t, v.x, v.y, v.winding});
+}
+
 template <int d>
 FieldRun Run(const FieldScene& s,
              const std::function<void(int, int, double)>& on_window) {
@@ -156,7 +177,7 @@ FieldRun Run(const FieldScene& s,
   int done = 0;
   const auto march = spacetime::MarchCharged<fields::ScalarQed, d>(
       model, grid, phi, pi, o,
-      [&](const auto& sys, const std::vector<double>&,
+      [&](const auto& sys, const std::vector<double>& y,
           const action::ChargedNodes& nodes,
           const spacetime::ChargedSliceState& handed) {
         const auto& D = sys.time_operator().base();
@@ -164,6 +185,8 @@ FieldRun Run(const FieldScene& s,
         for (int i = done == 0 ? 0 : 1; i < w; ++i) {
           sol.t.push_back(D.t(i));
           double charge = 0;
+          if constexpr (d == 2)
+            Track(sys, y, i, i == w - 1 ? &handed : nullptr, D.t(i), run);
           if (i == w - 1) {
             AppendHanded<d>(handed, grid, sol.phi, charge);
           } else {

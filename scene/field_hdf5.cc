@@ -192,7 +192,8 @@ void WriteFieldSlices(const std::string& path,
                       const std::vector<double>& phi,
                       const std::vector<double>& phi_t) {
   const std::size_t per = std::size_t(grid.points()) * m;
-  if (phi.size() != t.size() * per || phi_t.size() != phi.size())
+  if (phi.size() != t.size() * per ||
+      (!phi_t.empty() && phi_t.size() != phi.size()))
     throw std::runtime_error(path + ": " + std::to_string(t.size()) +
                              " slices need " + std::to_string(t.size() * per) +
                              " values of φ and φ_t");
@@ -205,7 +206,7 @@ void WriteFieldSlices(const std::string& path,
   shape.push_back(hsize_t(m));
   Dataset(f, "t", t, {t.size()}, path);
   Dataset(f, "phi", phi, shape, path);
-  Dataset(f, "phi_t", phi_t, shape, path);
+  if (!phi_t.empty()) Dataset(f, "phi_t", phi_t, shape, path);
   Attribute(f, "components", double(m), path);
   for (int a = 0; a < grid.dim(); ++a) {
     const std::string name = "axis" + std::to_string(a);

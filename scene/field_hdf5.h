@@ -29,7 +29,8 @@ void WriteCheckpoint(const std::string& path,
                      const spacetime::FieldCheckpoint& c);
 spacetime::FieldCheckpoint ReadCheckpoint(const std::string& path);
 
-// t: the slices' times; phi, phi_t: slice-major, value (s·N + j)·m + a.
+// t: the slices' times; phi, phi_t: slice-major, value (s·N + j)·m + a;
+// phi_t empty: no /phi_t (a charged field's values, which are not a state).
 // Refuses to overwrite an existing file.
 void WriteFieldSlices(const std::string& path,
                       const sbp::SpaceGrid<double>& grid, int m,

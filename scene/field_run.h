@@ -39,6 +39,13 @@ struct FieldRun {
   // action (A₀'s equation) and of the textbook law over every slice
   // (core/action/field_constraints.h); NaN for other fields.
   double gauss_residual = NAN, gauss_textbook = NAN;
+  // A charged field on two axes: the vortices (zeros of φ, gauge
+  // invariantly, core/action/vortex_tracks.h) of every kept slice.
+  struct VortexAt {
+    double t = 0, x = 0, y = 0;
+    int winding = 0;
+  };
+  std::vector<VortexAt> vortices;
 };
 
 // on_window(done, total, t) after each window (see FieldSolveOptions).
