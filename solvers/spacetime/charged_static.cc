@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <chrono>
@@ -75,7 +76,7 @@ double StaticResidualOf(const sbp::SpaceGrid<double>& grid,
 }
 
 // Newton on U from x: (H + μ I) δ = −∇U with H the sparse Hessian of U
-// (the slice's terms, charged_terms.h), factored by a sparse LDLᵀ. H is
+// (the slice's terms, charged_terms.h), factored by a sparse Cholesky. H is
 // singular along the gauge directions and ∇U is orthogonal to them
 // (Noether), so the tiny damping μ leaves the step's physical part
 // unchanged, as in normal_solver.h.
@@ -85,6 +86,9 @@ int NewtonPolish(const fields::ScalarQed& model,
   const int n = int(x.size());
   std::vector<double> g(x.size());
   PatternedMatrix hessian;
+  // H + μI is positive definite near a minimum: CHOLMOD's supernodal
+  // Cholesky.
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   int k = 0;
   for (; k < steps; ++k) {
@@ -104,11 +108,17 @@ int NewtonPolish(const fields::ScalarQed& model,
     Eigen::SparseMatrix<double> a = hessian.matrix();
     const double mu = 1e-12 * a.diagonal().cwiseAbs().maxCoeff();
     for (int c = 0; c < n; ++c) a.coeffRef(c, c) += mu;
-    if (k == 0) ldlt.analyzePattern(a);
-    ldlt.factorize(a);
-    if (ldlt.info() != Eigen::Success) break;
-    const Eigen::VectorXd step =
-        ldlt.solve(-Eigen::Map<const Eigen::VectorXd>(g.data(), n));
+    const Eigen::Map<const Eigen::VectorXd> rhs(g.data(), n);
+    Eigen::VectorXd step;
+    if (k == 0) llt.analyzePattern(a);
+    llt.factorize(a);
+    if (llt.info() == Eigen::Success) {
+      step = llt.solve(-rhs);
+    } else {  // a saddle (a pair close enough to attract): indefinite H
+      ldlt.compute(a);
+      if (ldlt.info() != Eigen::Success) break;
+      step = ldlt.solve(-rhs);
+    }
     for (int c = 0; c < n; ++c)
       if (c % Layout::m != Layout::kChi) x[c] += step[c];
   }
