@@ -64,7 +64,9 @@ struct PowerFit {
 PowerFit FitPower(const std::vector<double>& h, const std::vector<double>& y);
 
 // The relaxed pair as data (π = 0, E = 0: ρ = 0, Gauss's law holds)
-// marched `windows` windows of `window` nodes of `op` at step dt.
+// marched `windows` windows of `window` nodes of `op` at step dt, Newton's
+// normal equations factored by CHOLMOD's supernodal Cholesky or (cholmod =
+// false) Eigen's simplicial LDLᵀ (normal_solver.h).
 struct VortexMarchRun {
   bool ok = false;
   std::string reason;
@@ -78,6 +80,7 @@ struct VortexMarchRun {
   std::vector<double> window_seconds;
 };
 VortexMarchRun MarchVortexPair(const VortexStatic& pair, const std::string& op,
-                               int window, double dt, int windows);
+                               int window, double dt, int windows,
+                               bool cholmod = true);
 
 }  // namespace vivp::studies
