@@ -45,9 +45,13 @@ struct ChargedNodes {
   std::vector<double> electric;        // E_b at (i·Nx + j)·d + b
 };
 
+// scale_floor: the least scale of a slice (a charge density). Static data
+// (E = 0, ρ = 0: a vortex) have no terms that cancel in the law, and the
+// relative measure would compare round-off with round-off; the caller then
+// states the problem's own charge density scale.
 template <class Model, int d>
 ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
-                           const double* y) {
+                           const double* y, double scale_floor = 0) {
   using System = ChargedFieldSystem<Model, d>;
   const int nt = s.time_points(), nx = s.space_points();
   const auto& D = s.time_operator().base();
@@ -147,7 +151,8 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
       rho_max = std::max(rho_max, std::abs(out.charge_action[n0 + j]));
       rho_tb_max = std::max(rho_tb_max, std::abs(out.charge[n0 + j]));
     }
-    const double scale = flux + rho_max, scale_tb = flux + rho_tb_max;
+    const double scale = std::max(flux + rho_max, scale_floor),
+                 scale_tb = std::max(flux + rho_tb_max, scale_floor);
     for (int j = 0; j < nx; ++j) {
       const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
       out.gauss_action[n0 + j] =

@@ -122,25 +122,18 @@ inline void Square(LocalReal& t) {
   t.value *= t.value;
 }
 
-// The potential energy of one slice x (values j·m + a, χ's unused),
+// Calls visit(term, weight) for every term of the potential energy of one
+// slice x (values j·m + a, χ's unused),
 //   U = Σ_j Hˣ_j [Σ_b |D_bφ|² + V(|φ|²) + (inv_g2/2) Σ_{b<c} F_bc²],
-// and its gradient into grad (same layout, if not null): the forces of a
-// method of lines in the gauge A₀ = 0 (charged_leapfrog.h).
-template <int d, class Model>
-double ChargedSlicePotential(const Model& model,
-                             const sbp::SpaceGrid<double>& grid, double inv_g2,
-                             const double* x, double* grad) {
+// each term with its gradient and Hessian in the slice's unknowns: the sum,
+// the forces and the Hessian of U are sums over these.
+template <int d, class Model, class Visit>
+void ForEachSliceTerm(const Model& model, const sbp::SpaceGrid<double>& grid,
+                      double inv_g2, const double* x, Visit&& visit) {
   using L = ChargedLayout<d>;
   constexpr int m = L::m;
-  if (grad) std::fill(grad, grad + std::size_t(grid.points()) * m, 0.0);
   LocalComplex q;
   LocalReal t;
-  double u = 0;
-  auto add = [&](const LocalReal& term, double w) {
-    u += w * term.value;
-    if (grad)
-      for (int a = 0; a < term.n; ++a) grad[term.index[a]] += w * term.g[a];
-  };
   for (int j = 0; j < grid.points(); ++j) {
     const double hx = grid.NormWeight(j);
     for (int b = 0; b < d; ++b) {
@@ -148,17 +141,37 @@ double ChargedSlicePotential(const Model& model,
       ForwardDifference(grid.axis(b).dx(), x, j * m + L::kRe, j * m + L::kIm,
                         k * m + L::kRe, k * m + L::kIm, j * m + L::A(b), q);
       SquaredNorm(q, t);
-      add(t, hx);
+      visit(t, hx);
       for (int c = b + 1; c < d; ++c) {
         MagneticAt<d>(
             grid, x, j, b, c, [&](int jj, int a) { return jj * m + a; }, t);
         Square(t);
-        add(t, 0.5 * hx * inv_g2);
+        visit(t, 0.5 * hx * inv_g2);
       }
     }
     PotentialAt(model, x, j * m + L::kRe, j * m + L::kIm, t);
-    add(t, hx);
+    visit(t, hx);
   }
+}
+
+// U and its gradient into grad (same layout, if not null): the forces of a
+// method of lines in the gauge A₀ = 0 (charged_leapfrog.h), and what a
+// static solution makes vanish (solvers/spacetime/charged_static.h).
+template <int d, class Model>
+double ChargedSlicePotential(const Model& model,
+                             const sbp::SpaceGrid<double>& grid, double inv_g2,
+                             const double* x, double* grad) {
+  if (grad)
+    std::fill(grad, grad + std::size_t(grid.points()) * ChargedLayout<d>::m,
+              0.0);
+  double u = 0;
+  ForEachSliceTerm<d>(model, grid, inv_g2, x,
+                      [&](const LocalReal& term, double w) {
+                        u += w * term.value;
+                        if (grad)
+                          for (int a = 0; a < term.n; ++a)
+                            grad[term.index[a]] += w * term.g[a];
+                      });
   return u;
 }
 

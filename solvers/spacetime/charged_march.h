@@ -42,6 +42,10 @@ struct ChargedMarchOptions {
   int windows = 1;
   double t0 = 0;
   double gauss_tolerance = 1e-10;
+  // The least charge density the law is measured against
+  // (charged_observables.h): 0 for data with charges, the problem's own
+  // scale for static data, whose terms in the law all vanish.
+  double gauss_scale_floor = 0;
   int predictor_substeps = 4;  // leapfrog steps per node spacing; 0: none
   // From the straight path (predictor_substeps = 0) give refinement_steps
   // = 0: far from the solution the chord steps diverged where full Newton
@@ -128,7 +132,9 @@ std::vector<double> Start(const System& sys, const Model& model,
 
 // on_window(system, y, nodes, handed) after each solved window, with the
 // state it hands on (the data it was solved from if it failed its check).
-template <class Model, int d, class OnWindow>
+// Solver: Newton's linear solver (normal_solver.h and its factorization).
+template <class Model, int d, class Solver = NormalEquationsSolver,
+          class OnWindow>
 ChargedMarch MarchCharged(const Model& model,
                           const sbp::SpaceGrid<double>& grid,
                           std::vector<double> phi, std::vector<double> pi,
@@ -138,7 +144,7 @@ ChargedMarch MarchCharged(const Model& model,
   ChargedMarch out;
   out.reason = NetChargeReason<System>(grid, phi, pi);
   if (!out.reason.empty()) return out;
-  NormalEquationsSolver solver;
+  Solver solver;
   double t = o.t0;
   for (int w = 0; w < o.windows; ++w) {
     const sbp::RegularizedOperator<double> dbar(sbp::MakeOperator<double>(
@@ -170,7 +176,8 @@ ChargedMarch MarchCharged(const Model& model,
       out.windows.push_back(rep);
       return out;
     }
-    const auto nodes = action::ObserveWindow(sys, y.data());
+    const auto nodes =
+        action::ObserveWindow(sys, y.data(), o.gauss_scale_floor);
     rep.gauss =
         *std::max_element(nodes.gauss_action.begin(), nodes.gauss_action.end());
     out.windows.push_back(rep);

@@ -17,7 +17,11 @@
 //
 // Cost: the pattern of ĴᵀĴ couples what J's columns share; its ordering is
 // analysed once per pattern, and each factorization is of that banded-like
-// matrix (one per Newton iteration, none for refinement steps).
+// matrix (one per Newton iteration, none for refinement steps). The
+// factorization is a parameter: Eigen's simplicial LDLᵀ by default, or a
+// supernodal Cholesky (Eigen's CholmodSupernodalLLT, SuiteSparse's CHOLMOD)
+// where the fill is large, as in windows of 2 + 1 D grids
+// (studies/vortex.cc).
 #pragma once
 
 #include <Eigen/Core>
@@ -31,9 +35,10 @@
 
 namespace vivp::spacetime {
 
-class NormalEquationsSolver {
+template <class Factorization>
+class NormalEquationsSolverOf {
  public:
-  explicit NormalEquationsSolver(double damping = 1e-12) : mu_(damping) {}
+  explicit NormalEquationsSolverOf(double damping = 1e-12) : mu_(damping) {}
 
   bool valid = false;
   long long factorizations = 0;
@@ -102,9 +107,12 @@ class NormalEquationsSolver {
   Eigen::SparseMatrix<double> scaled_, normal_;
   Eigen::VectorXd scale_;
   std::vector<bool> held_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  Factorization ldlt_;
   int analyzed_ = 0;
   std::string message_;
 };
+
+using NormalEquationsSolver =
+    NormalEquationsSolverOf<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>;
 
 }  // namespace vivp::spacetime

@@ -1,0 +1,86 @@
+// The Abelian Higgs model at critical coupling in 2 + 1 D measured
+// (docs/gauge.md §9): a Nielsen–Olesen vortex and antivortex far apart on a
+// periodic square, relaxed to a static critical point of the slice's energy
+// (solvers/spacetime/charged_static.h), its energy per unit winding against
+// the Bogomolny bound 2π v² |n|, and the relaxed pair marched window by
+// window with the space-time action (charged_march.h).
+//
+// Normalization (problems/fields/charged.h): D = ∂ − iA, the coupling in
+// front of the field strength, V = (λ/2)(|φ|² − v²)². The static energy
+//   E = ∫ |D_1φ|² + |D_2φ|² + B²/(2e²) + (λ/2)(|φ|² − v²)²
+// is, with |D_1φ|² + |D_2φ|² = |(D_1 ± iD_2)φ|² ± B|φ|² + a divergence and
+// λ = e² (critical coupling),
+//   E = ∫ |(D_1 ± iD_2)φ|² + (1/(2e²))(B ∓ e²(v² − |φ|²))² ± v² ∫ B,
+// so E ≥ v² |∫B| = 2π v² |n|: the flux quantum of a unit charge is 2π
+// (Bogomolny 1976; Manton & Sutcliffe, Topological Solitons 2004, ch. 7).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/sbp/space_grid.h"
+#include "problems/fields/charged.h"
+
+namespace vivp::studies {
+
+// e = v = 1, λ = e² = 1, m² = 0: both the scalar's and the photon's mass is
+// √2 e v.
+fields::ScalarQed CriticalHiggs();
+
+// n × n points on [−L/2, L/2)², shifted by h/2 so that the vortex centres
+// (±L/4, 0) are plaquette centres (L/(4h) must be an integer).
+sbp::SpaceGrid<double> VortexSquare(int n, double length);
+
+// The ansatz of a vortex (n = 1) at (L/4, 0) and an antivortex (n = −1) at
+// (−L/4, 0) (ChargedLayout<2>, χ = 0): φ = v f(r₁) f(r₂) e^{iΘ} with
+// f = tanh r, and A = ∇Θ − (1 − a(r₁))∇θ₁ + (1 − a(r₂))∇θ₂ with
+// a = tanh² r, each link the line integral of A along it over h. Θ is the
+// phase of a function with a simple zero at the vortex and a simple pole at
+// the antivortex that is periodic on the torus (Jacobi's ϑ₁, below), so
+// that φ and A are exactly periodic.
+std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
+                                     double length);
+
+// The relaxed pair on n × n points of [−L/2, L/2)².
+struct VortexStatic {
+  int n = 0;
+  double length = 0, h = 0;
+  double energy = 0;
+  double deficit = 0;  // U/(2π v² Σ|n|) − 1, Σ|n| = 2
+  // The static equations' residual max |∂U/∂x|/Hˣ at the ansatz, after
+  // L-BFGS and after the Newton steps (charged_static.h).
+  double start_residual = 0, lbfgs_residual = 0, residual = 0;
+  int iterations = 0, newton = 0;
+  double lbfgs_seconds = 0, seconds = 0;
+  std::string message;
+  std::vector<double> x;  // the relaxed slice
+};
+VortexStatic RelaxVortexPair(int n, double length, double residual = 1e-11);
+
+// The order p and constant C of deficit ≈ C h^p by least squares in logs.
+struct PowerFit {
+  double order = 0, constant = 0;
+};
+PowerFit FitPower(const std::vector<double>& h, const std::vector<double>& y);
+
+// The relaxed pair as data (π = 0, E = 0: ρ = 0, Gauss's law holds)
+// marched `windows` windows of `window` nodes of `op` at step dt, Newton's
+// normal equations factored by CHOLMOD's supernodal Cholesky or (cholmod =
+// false) Eigen's simplicial LDLᵀ (normal_solver.h).
+struct VortexMarchRun {
+  bool ok = false;
+  std::string reason;
+  int windows = 0;
+  double t_end = 0;
+  double modulus = 0;         // max over nodes of | |φ|(t) − |φ|(0) |
+  double energy_density = 0;  // max over nodes of its change
+  double energy_scale = 0;    // max of the static energy density
+  double gauss = 0;           // the action's law, max over nodes
+  long long newton = 0;
+  std::vector<double> window_seconds;
+};
+VortexMarchRun MarchVortexPair(const VortexStatic& pair, const std::string& op,
+                               int window, double dt, int windows,
+                               bool cholmod = true);
+
+}  // namespace vivp::studies
