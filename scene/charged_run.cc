@@ -9,7 +9,7 @@
 #include "core/sbp/builder.h"
 #include "scene/charged_scene.h"
 #include "scene/field_profile.h"
-#include "solvers/spacetime/charged_march.h"
+#include "solvers/spacetime/charged_march_2d.h"
 #include "solvers/spacetime/resolution.h"
 
 namespace vivp::scene {
@@ -175,45 +175,53 @@ FieldRun Run(const FieldScene& s,
   SystemData<d>(s, phi, pi);
   const int nx = grid.points();
   int done = 0;
-  const auto march = spacetime::MarchCharged<fields::ScalarQed, d>(
-      model, grid, phi, pi, o,
-      [&](const auto& sys, const std::vector<double>& y,
-          const action::ChargedNodes& nodes,
-          const spacetime::ChargedSliceState& handed) {
-        const auto& D = sys.time_operator().base();
-        // The junction is the previous window's end state.
-        for (int i = done == 0 ? 0 : 1; i < w; ++i) {
-          sol.t.push_back(D.t(i));
-          double charge = 0;
-          if constexpr (d == 2)
-            Track(sys, y, i, i == w - 1 ? &handed : nullptr, D.t(i), run);
-          if (i == w - 1) {
-            AppendHanded<d>(handed, grid, sol.phi, charge);
-          } else {
-            for (int j = 0; j < nx; ++j) {
-              const std::size_t k = std::size_t(i) * nx + j;
-              sol.phi.push_back(nodes.modulus[k]);
-              for (int b = 0; b < d; ++b)
-                sol.phi.push_back(nodes.electric[k * d + b]);
-              sol.phi.push_back(nodes.charge_action[k]);
-            }
-          }
-          for (std::size_t c = 0; c < run.columns.size(); ++c) {
-            double v = Column(run.columns[c], nodes, grid, i);
-            if (i == w - 1 && run.columns[c] == "energy")
-              v = spacetime::SliceEnergy<d>(model, grid, D.t(i), handed);
-            if (i == w - 1 && run.columns[c] == "charge") v = charge;
-            run.values[c].push_back(v);
-          }
-          run.gauss_residual =
-              std::max(run.gauss_residual, Column("gauss", nodes, grid, i));
-          run.gauss_textbook = std::max(
-              run.gauss_textbook, Column("gauss_textbook", nodes, grid, i));
+  auto observe = [&](const auto& sys, const std::vector<double>& y,
+                     const action::ChargedNodes& nodes,
+                     const spacetime::ChargedSliceState& handed) {
+    const auto& D = sys.time_operator().base();
+    // The junction is the previous window's end state.
+    for (int i = done == 0 ? 0 : 1; i < w; ++i) {
+      sol.t.push_back(D.t(i));
+      double charge = 0;
+      if constexpr (d == 2)
+        Track(sys, y, i, i == w - 1 ? &handed : nullptr, D.t(i), run);
+      if (i == w - 1) {
+        AppendHanded<d>(handed, grid, sol.phi, charge);
+      } else {
+        for (int j = 0; j < nx; ++j) {
+          const std::size_t k = std::size_t(i) * nx + j;
+          sol.phi.push_back(nodes.modulus[k]);
+          for (int b = 0; b < d; ++b)
+            sol.phi.push_back(nodes.electric[k * d + b]);
+          sol.phi.push_back(nodes.charge_action[k]);
         }
-        sol.window_ends.push_back(sol.t.size() - 1);
-        ++done;
-        if (on_window) on_window(done, o.windows, D.t(w - 1));
-      });
+      }
+      for (std::size_t c = 0; c < run.columns.size(); ++c) {
+        double v = Column(run.columns[c], nodes, grid, i);
+        if (i == w - 1 && run.columns[c] == "energy")
+          v = spacetime::SliceEnergy<d>(model, grid, D.t(i), handed);
+        if (i == w - 1 && run.columns[c] == "charge") v = charge;
+        run.values[c].push_back(v);
+      }
+      run.gauss_residual =
+          std::max(run.gauss_residual, Column("gauss", nodes, grid, i));
+      run.gauss_textbook = std::max(run.gauss_textbook,
+                                    Column("gauss_textbook", nodes, grid, i));
+    }
+    sol.window_ends.push_back(sol.t.size() - 1);
+    ++done;
+    if (on_window) on_window(done, o.windows, D.t(w - 1));
+  };
+  // The Higgs vacuum's charge density 2v²·√2ev is the scale of the Gauss
+  // law of data with E = 0 and ρ = 0 (static vortices).
+  o.gauss_scale_floor =
+      2 * std::sqrt(2.0) * model.coupling(0) * std::pow(model.v2, 1.5);
+  spacetime::ChargedMarch march;
+  if constexpr (d == 2)
+    march = spacetime::MarchChargedSupernodal(model, grid, phi, pi, o, observe);
+  else
+    march = spacetime::MarchCharged<fields::ScalarQed, d>(model, grid, phi, pi,
+                                                          o, observe);
   sol.windows = int(march.windows.size());
   for (const auto& r : march.windows) {
     sol.factorizations += r.iterations;

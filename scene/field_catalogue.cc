@@ -216,12 +216,16 @@ std::string FieldSchemaHelp() {
        "  plane_wave (k, amplitude); diagnostics gauss, gauss_textbook "
        "(docs/gauge.md).\n"
        "  'maxwell' + 'scalar_qed' (+ 'abelian_higgs'): a charged field on "
-       "links, one axis,\n"
-       "  periodic; profile charge_pair (center, k, amplitude, width, "
-       "electric); windows\n"
-       "  of equal Δt; diagnostics energy, charge, gauss, gauss_textbook; "
-       "field.csv holds\n"
-       "  abs_phi, E_x, rho (docs/field_scenes.md §8).\n\n"
+       "links, 1 or 2\n"
+       "  periodic axes; profiles charge_pair (center, k, amplitude, width, "
+       "electric),\n"
+       "  on a square: vortex_pair (separation), vortex_collision (offset, "
+       "speed,\n"
+       "  transition); windows of equal Δt; diagnostics energy, charge, "
+       "gauss,\n"
+       "  gauss_textbook; the values are abs_phi, E_x [, E_y], rho; on two "
+       "axes\n"
+       "  vortices.csv and tracks.png (docs/field_scenes.md §8).\n\n"
        "Terms (parameter = default):\n";
   for (const auto& t : FieldTermCatalogue()) {
     h << "  " << t.name << ": " << t.formula;

@@ -100,11 +100,15 @@ ProfileFormulas MakeProfileNd(const TomlReader& r, const toml::table& initial,
 // The profiles of a charged field (read_charged.cc): their names and keys,
 // the formula of (Re φ, Im φ, A_b) and (Re π, Im π, ∂_tA_b), and the
 // refusal of data with a net charge on the torus.
-const std::vector<std::string>& ChargedProfileNames();
+const std::vector<std::string>& ChargedProfileNames(int d);
 std::vector<ProfileKey> ChargedProfileKeys(const FieldScene& s);
 ProfileFormulas MakeChargedProfile(const ProfileValues& p, const FieldScene& s);
 void CheckNeutral(const TomlReader& r, const toml::node& at,
                   const FieldScene& s);
+// On two axes: s.phi0 and s.phi_t0 of the vortex profile named in s.initial
+// (its keys read from `t`; refusals at `at`).
+void MakeVortexProfile(const TomlReader& r, const toml::table& t,
+                       const toml::node& at, FieldScene& s);
 
 // Reads s.phi0 and s.phi_t0 from the CSV file named at `file` (relative to
 // `base`): one row per spatial point, φ_0 … φ_{m−1} then φ_t,0 … φ_t,m−1.

@@ -12,6 +12,7 @@
 #include "scene/field_sections.h"
 #include "scene/text.h"
 #include "solvers/spacetime/charged_march.h"
+#include "solvers/spacetime/vortex_data.h"
 
 namespace vivp::scene::detail {
 
@@ -135,13 +136,22 @@ void ReadChargedPoints(const TomlReader& r, const toml::table& t,
                " time points on this spatial grid");
 }
 
-const std::vector<std::string>& ChargedProfileNames() {
-  static const std::vector<std::string> names = {"charge_pair"};
-  return names;
+const std::vector<std::string>& ChargedProfileNames(int d) {
+  static const std::vector<std::string> line = {"charge_pair"},
+                                        plane = {"vortex_pair",
+                                                 "vortex_collision"};
+  return d == 1 ? line : plane;
 }
 
 std::vector<ProfileKey> ChargedProfileKeys(const FieldScene& s) {
-  return {{"center", s.x0 + 0.35 * (s.x1 - s.x0),
+  const double l = s.x1 - s.x0;
+  if (s.initial.profile == "vortex_pair")
+    return {{"separation", l / 2, "the vortex and antivortex's distance"}};
+  if (s.initial.profile == "vortex_collision")
+    return {{"offset", 3.0, "the vortices start at ± offset from the centre"},
+            {"speed", 0.4, "their speed towards it"},
+            {"transition", 1.0, "width of the velocity's change of sign"}};
+  return {{"center", s.x0 + 0.35 * l,
            "the first packet's center; the second is its mirror x0 + x1 − c"},
           {"k", 0.8, "the packets' wave number"},
           {"amplitude", 0.5, "the packets' largest |φ|"},
@@ -186,16 +196,69 @@ ProfileFormulas MakeChargedProfile(const ProfileValues& p,
   return f;
 }
 
+// The vortex profiles on a square torus (solvers/spacetime/vortex_data.h):
+// relaxed from the ansatz, refused when the relaxation moved a vortex by
+// more than a spacing or annihilated it.
+void MakeVortexProfile(const TomlReader& r, const toml::table& t,
+                       const toml::node& at, FieldScene& s) {
+  const auto model = ChargedModel(s);
+  const FieldAxis& y = s.Axis(1);
+  if (y.space_points != s.space_points ||
+      std::abs((y.x1 - y.x0) - (s.x1 - s.x0)) > 1e-12 * (s.x1 - s.x0))
+    r.Fail(at,
+           "the vortex profiles are built on a square torus; this grid is " +
+               std::to_string(s.space_points) + " × " +
+               std::to_string(y.space_points) + " points on " +
+               FormatNumber(s.x1 - s.x0) + " × " + FormatNumber(y.x1 - y.x0),
+           "expected equal points and domain lengths on both axes");
+  if (!(model.lambda > 0 && model.v2 > 0))
+    r.Fail(at,
+           "a vortex needs the broken vacuum |φ| = v of an 'abelian_higgs' "
+           "term with λ > 0 and v ≠ 0",
+           "expected an 'abelian_higgs' term (λ = e² is critical coupling)");
+  const ProfileValues p{r, t, s};
+  const auto grid = s.Grid();
+  const bool pair = s.initial.profile == "vortex_pair";
+  const auto d =
+      pair ? spacetime::VortexPairData(model, grid, p["separation"])
+           : spacetime::VortexCollisionData(model, grid, p["offset"],
+                                            p["speed"], p["transition"]);
+  if (!(d.moved <= grid.axis(0).dx()))
+    p.Fail(pair ? "separation" : "offset",
+           "relaxing the static start moved a vortex by " +
+               FormatNumber(d.moved) + " (" + std::to_string(d.found) +
+               " zeros of φ left): the vortices attract, or annihilated",
+           "vortices farther apart, or critical coupling λ = e² (where like "
+           "vortices exert no force)");
+  const int given = 2 + 2;
+  s.phi0.assign(std::size_t(grid.points()) * given, 0.0);
+  s.phi_t0.assign(s.phi0.size(), 0.0);
+  for (int j = 0; j < grid.points(); ++j)
+    for (int a = 0; a < given; ++a) {
+      s.phi0[std::size_t(j) * given + a] = d.x[std::size_t(j) * 5 + a];
+      s.phi_t0[std::size_t(j) * given + a] = d.pi[std::size_t(j) * 5 + a];
+    }
+  s.initial.parameters["relaxation_residual"] = d.relax.residual;
+  s.no_exact = "a charged field's scene has no exact solution";
+}
+
 void CheckNeutral(const TomlReader& r, const toml::node& at,
                   const FieldScene& s) {
-  using System = action::ChargedFieldSystem<fields::ScalarQed, 1>;
   std::vector<double> phi, pi;
   ChargedSystemData(s, phi, pi);
-  const std::string why = spacetime::NetChargeReason<System>(s.Grid(), phi, pi);
+  const std::string why =
+      s.Dim() == 2 ? spacetime::NetChargeReason<
+                         action::ChargedFieldSystem<fields::ScalarQed, 2>>(
+                         s.Grid(), phi, pi)
+                   : spacetime::NetChargeReason<
+                         action::ChargedFieldSystem<fields::ScalarQed, 1>>(
+                         s.Grid(), phi, pi);
   if (!why.empty())
     r.Fail(at, why,
-           "expected packets at mirrored points (leave 'center' well inside "
-           "the domain)");
+           s.Dim() == 2 ? "expected a smaller speed (the moving data's charge "
+                          "cancels between the two vortices)"
+                        : "expected packets at mirrored points (leave "
+                          "'center' well inside the domain)");
 }
 
 }  // namespace vivp::scene::detail

@@ -186,7 +186,7 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
                  const std::filesystem::path& base, FieldScene& s) {
   const toml::table& t = r.Table(root, "initial", true);
   const bool grid = s.Dim() > 1;
-  const auto& names = s.Charged() ? ChargedProfileNames()
+  const auto& names = s.Charged() ? ChargedProfileNames(s.Dim())
                       : grid      ? ProfileNamesNd()
                                   : FieldProfileNames();
   const toml::node& p =
@@ -208,6 +208,10 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
     s.initial.allow_jump = *n->value<bool>();
   }
   ReadProfileKeys(r, t, keys, s);
+  if (s.Charged() && grid) {  // relaxed on the lattice, not a formula
+    MakeVortexProfile(r, t, p, s);
+    return CheckNeutral(r, p, s);
+  }
   if (s.initial.profile == "csv") {
     const toml::node& f =
         r.Require(t, "initial", "file",

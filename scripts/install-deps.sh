@@ -11,6 +11,9 @@ packages=(
   liblapack-dev libgnuplot-iostream-dev gnuplot-nox
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libginac-dev
   libsuitesparse-dev libfftw3-dev libhdf5-dev hdf5-tools
+  # An optimized BLAS for CHOLMOD's supernodal factorization (the charged
+  # march in 2 + 1 D): 4-7× faster than the reference BLAS or ATLAS there.
+  libopenblas0-pthread
 )
 
 # `--distributed` (make test): also OpenMPI and FFTW's MPI transforms, for

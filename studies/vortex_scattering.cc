@@ -1,14 +1,12 @@
 #include "studies/vortex_scattering.h"
 
-#include <Eigen/CholmodSupport>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 
 #include "core/action/vortex_tracks.h"
-#include "solvers/spacetime/charged_march.h"
-#include "solvers/spacetime/charged_static.h"
+#include "solvers/spacetime/charged_march_2d.h"
 #include "solvers/spacetime/vortex_data.h"
 #include "studies/vortex.h"
 
@@ -16,9 +14,7 @@ namespace vivp::studies {
 
 namespace {
 
-using System = action::ChargedFieldSystem<fields::ScalarQed, 2>;
-using Supernodal = spacetime::NormalEquationsSolverOf<
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>>;
+using System = spacetime::ChargedSystem2;
 
 // The vortices of node i of a window.
 void Track(const System& sys, const std::vector<double>& y, int i, double t,
@@ -52,8 +48,8 @@ double LineAngle(const std::vector<TrackSample>& s) {
 
 // The collision (the least distance of the two vortices) and the outgoing
 // directions, fitted on the last 40 % of the time after it, one line per
-// half plane y > 0 and y < 0.
-void Measure(ScatteringRun& r, double t_end) {
+// half plane y > cy and y < cy (cy: the centre of the collision).
+void Measure(ScatteringRun& r, double t_end, double cy) {
   std::vector<double> times;
   for (const auto& p : r.tracks)
     if (times.empty() || p.t != times.back()) times.push_back(p.t);
@@ -73,7 +69,8 @@ void Measure(ScatteringRun& r, double t_end) {
   for (const int side : {1, -1}) {
     std::vector<TrackSample> out;
     for (const auto& p : r.tracks)
-      if (p.winding > 0 && p.t >= from && side * p.y > 0) out.push_back(p);
+      if (p.winding > 0 && p.t >= from && side * (p.y - cy) > 0)
+        out.push_back(p);
     if (out.size() >= 3) r.outgoing.push_back(LineAngle(out));
   }
   for (double a : r.outgoing) r.angle += a / double(r.outgoing.size());
@@ -84,42 +81,23 @@ void Measure(ScatteringRun& r, double t_end) {
 ScatteringRun ScatterVortices(const ScatteringSetup& s) {
   ScatteringRun r;
   const auto start = std::chrono::steady_clock::now();
-  const auto grid = VortexSquare(s.n, s.length);
+  auto axis = [&] {
+    return sbp::SpaceDerivative<double>::Periodic(2, s.n, -s.length / 2,
+                                                  s.length);
+  };
+  const sbp::SpaceGrid<double> grid({axis(), axis()});
   const auto model = CriticalHiggs();
-  const double l = s.length;
-  std::vector<double> x = spacetime::VortexAnsatz(grid, 1.0,
-                                                  {{s.offset, 0, 1},
-                                                   {-s.offset, 0, 1},
-                                                   {l / 2, 3 * l / 8, -1},
-                                                   {l / 2, -3 * l / 8, -1}});
-  // The profiles relax in a few tens of L-BFGS iterations (the residual
-  // falls from 0.9 to 1e-3 on 32²); past them L-BFGS moves the vortices
-  // along their flat directions (at critical coupling like vortices exert
-  // no force), and after 150 they meet the antivortices: the relaxation
-  // stops early, the positions kept.
-  spacetime::StaticOptions so;
-  so.residual = 1e-3;
-  so.max_iterations = 30;
-  so.newton_steps = 0;
-  const auto relaxed = spacetime::RelaxChargedSlice2(model, grid, 0, x, so);
-  r.relax_residual = relaxed.residual;
-  // Velocity −u tanh(x/w) along x near the vortices, none near the
-  // antivortices (r > 5.5 from the centre).
-  const double u = s.speed, w = s.transition;
-  const std::vector<double> pi =
-      spacetime::MovingSliceVelocities(grid, x, [u, w](double px, double py) {
-        const double r2 = (px * px + py * py) / (5.5 * 5.5);
-        return std::array<double, 2>{
-            -u * std::tanh(px / w) * std::exp(-std::pow(r2, 4)), 0.0};
-      });
+  const auto data = spacetime::VortexCollisionData(model, grid, s.offset,
+                                                   s.speed, s.transition);
+  r.relax_residual = data.relax.residual;
   spacetime::ChargedMarchOptions o;
   o.time_operator = s.op;
   o.window = s.window;
   o.dt = s.dt;
   o.windows = std::max(1, int(std::lround(s.t_end / (s.dt * (s.window - 1)))));
   double e0 = NAN;
-  const auto march = spacetime::MarchCharged<fields::ScalarQed, 2, Supernodal>(
-      model, grid, x, pi, o,
+  const auto march = spacetime::MarchChargedSupernodal(
+      model, grid, data.x, data.pi, o,
       [&](const System& sys, const std::vector<double>& y,
           const action::ChargedNodes& nodes,
           const spacetime::ChargedSliceState& handed) {
@@ -136,7 +114,9 @@ ScatteringRun ScatterVortices(const ScatteringSetup& s) {
   r.ok = march.ok;
   r.reason = march.reason;
   for (const auto& rep : march.windows) r.newton += rep.iterations;
-  if (r.ok) Measure(r, o.dt * (s.window - 1) * o.windows);
+  if (r.ok)
+    Measure(r, o.dt * (s.window - 1) * o.windows,
+            0.5 * (data.seeds[0].y + data.seeds[1].y));
   r.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();

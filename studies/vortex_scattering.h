@@ -3,13 +3,12 @@
 // they scatter at 90° (Ruback 1988; Moriarty, Myers & Rebbi 1988), which
 // the tracks of the zeros of φ measure.
 //
-// The torus holds windings summing to zero, so two antivortices sit far
-// from the collision, at (L/2, ±3L/8), where the attraction of a vortex
-// decays as exp(−√2 e v r). The static start (vortices at (±a, 0)) is
-// relaxed (solvers/spacetime/charged_static.h; at critical coupling like
-// vortices exert no force on each other), then set in motion towards the
-// centre with speed u (solvers/spacetime/vortex_data.h), the velocity
-// switched on smoothly near the vortices and off near the antivortices.
+// The data are VortexCollisionData (solvers/spacetime/vortex_data.h) on
+// [−L/2, L/2)², about its plaquette centre c = (h/2, h/2): the vortices at
+// c ± (a, 0) moving towards c with speed u; the torus holds windings
+// summing to zero, so two antivortices sit far from the collision, at
+// c + (L/2, ±3L/8), where the attraction of a vortex decays as
+// exp(−√2 e v r).
 #pragma once
 
 #include <string>

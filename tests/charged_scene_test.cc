@@ -5,6 +5,7 @@
 // a coupling that changes in time keeps the law; bad input exits 2 with
 // one line and writes nothing.
 #define BOOST_TEST_MODULE charged_scene
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -153,5 +154,76 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused) {
        {"higgs_alone", "no_maxwell", "kinetic", "interval", "nan", "inf",
         "vanishing", "charged", "windows", "global", "tolerance", "coarse",
         "order", "unstable"})
+    BOOST_TEST(s.Clean(name), name);
+}
+
+namespace {
+
+// A vortex and an antivortex on 24² points of [−6, 6)², SBP21 in one
+// window of 8 at Δt = 0.1; each argument replaces a part.
+std::string Vortices(
+    const std::string& field = "points = 24\n",
+    const std::string& terms =
+        "[[term]]\ntype = \"maxwell\"\n[[term]]\ntype = \"scalar_qed\"\n"
+        "[[term]]\ntype = \"abelian_higgs\"\n",
+    const std::string& initial = "profile = \"vortex_pair\"\n") {
+  return "[field]\ndomain = [[-6.0, 6.0], [-6.0, 6.0]]\n" + field + terms +
+         "[initial]\n" + initial +
+         "[time]\nend = 0.7\npoints = 8\n[method]\noperator = \"sbp21\"\n"
+         "window_points = 8\n[output]\ndiagnostics = [\"energy\", "
+         "\"gauss\"]\nanimation = false\nheat_maps = [0.7]\n";
+}
+
+}  // namespace
+
+// At critical coupling a vortex and an antivortex far apart stay where
+// they are, and the action's Gauss law holds.
+BOOST_AUTO_TEST_CASE(a_vortex_pair_stays_and_is_tracked) {
+  const vivp::testing::SceneScratch s("vivp_charged_scene_");
+  const auto r = s.RunScene("pair2", Vortices());
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const fs::path out = s.dir / "pair2.out";
+  const auto j = nlohmann::json::parse(Slurp(out / "summary.json"));
+  const double gauss = j["gauss_residual"].get<double>();
+  const double energy =
+      j["diagnostics"]["energy"]["relative_drift"].get<double>();
+  BOOST_TEST_MESSAGE("vortex pair: Gauss of the action "
+                     << gauss << ", energy drift " << energy);
+  BOOST_TEST(gauss < 1e-12);
+  // A static solution: the energy moves by round-off (measured 1e-14).
+  BOOST_TEST(energy < 1e-10);
+  for (const char* f :
+       {"field.h5", "vortices.csv", "tracks.png", "heat_map_0.png"})
+    BOOST_TEST(fs::exists(out / f), f);
+  // Two zeros of φ at every one of the 8 slices, windings +1 and −1.
+  const std::string csv = Slurp(out / "vortices.csv");
+  BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 1 + 2 * 8);
+  BOOST_TEST(csv.find(",-1\n") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(bad_vortex_input_is_refused) {
+  const vivp::testing::SceneScratch s("vivp_charged_scene_");
+  Refused(s.RunScene("oblong", Vortices("points = [24, 20]\n")),
+          {"square torus", "24 × 20"});
+  Refused(s.RunScene("no_higgs",
+                     Vortices("points = 24\n",
+                              "[[term]]\ntype = \"maxwell\"\n[[term]]\ntype "
+                              "= \"scalar_qed\"\n")),
+          {"abelian_higgs", "vacuum"});
+  // Two spacings apart, the pair annihilates while it relaxes.
+  Refused(s.RunScene("close", Vortices("points = 24\n",
+                                       "[[term]]\ntype = \"maxwell\"\n[[term]]"
+                                       "\ntype = \"scalar_qed\"\n[[term]]\n"
+                                       "type = \"abelian_higgs\"\n",
+                                       "profile = \"vortex_pair\"\n"
+                                       "separation = 1.0\n")),
+          {"moved a vortex", "farther apart"});
+  Refused(s.RunScene("three",
+                     "[field]\ndomain = [[0.0, 8.0], [0.0, 8.0], [0.0, "
+                     "8.0]]\npoints = 10\n[[term]]\ntype = \"maxwell\"\n"
+                     "[[term]]\ntype = \"scalar_qed\"\n[initial]\nprofile = "
+                     "\"plane_wave\"\n[time]\nend = 1.0\npoints = 8\n"),
+          {"1 or 2 axes"});
+  for (const char* name : {"oblong", "no_higgs", "close", "three"})
     BOOST_TEST(s.Clean(name), name);
 }
