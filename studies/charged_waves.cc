@@ -82,6 +82,10 @@ ChargedGaussRun RunChargedGauss(const std::string& op, int window,
           r.textbook = std::max(r.textbook,
                                 *std::max_element(nodes.gauss_textbook.begin(),
                                                   nodes.gauss_textbook.end()));
+          r.textbook_absolute =
+              std::max(r.textbook_absolute,
+                       *std::max_element(nodes.textbook_absolute.begin(),
+                                         nodes.textbook_absolute.end()));
           const double e = spacetime::SliceEnergy<1>(
               model, g, s.time_operator().base().t(s.time_points() - 1),
               handed);

@@ -44,10 +44,11 @@ struct ChargedGaussRun {
   double fraction = 1, dt = 0;
   int windows = 0;
   long long newton = 0;
-  int retries = 0;      // windows solved again with full Newton steps
-  double gauss = 0;     // the action's law, max over every node
-  double textbook = 0;  // (D⁻·E)/e² − 2 Im(φ̄ D_0φ), the same
-  double energy = 0;    // drift of the handed states' energy
+  int retries = 0;               // windows solved again with full Newton steps
+  double gauss = 0;              // the action's law, max over every node
+  double textbook = 0;           // (D⁻·E)/e² − 2 Im(φ̄ D_0φ), the same
+  double textbook_absolute = 0;  // its largest |·|, not relative
+  double energy = 0;             // drift of the handed states' energy
   double seconds = 0;
   std::string failure;  // why it did not run, if it did not
 };

@@ -33,6 +33,9 @@ struct ChargedNodes {
   std::vector<double>
       gauss_action;  // |G|/(Hᵗ Hˣ) over the slice's scale (below)
   std::vector<double> gauss_textbook;  // the same for (D⁻·E)/e² − ρ
+  // |(D⁻·E)/e² − ρ| itself, a charge density (its order in Δx is not
+  // hidden by the scale's 2/h_b).
+  std::vector<double> textbook_absolute;
   // χ's rows, Dᵀ G, relative to their two parts: the law as the action
   // states it for the unknown χ, before (Dᵀ)⁺ recovers G.
   std::vector<double> gauss_rows;
@@ -123,6 +126,7 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
   const Eigen::MatrixXd total = lu.solve(rt);
   out.gauss_action.resize(nodes);
   out.gauss_textbook.resize(nodes);
+  out.textbook_absolute.resize(nodes);
   out.charge_action.resize(nodes);
   // Each slice's scale is that of the terms that cancel in the law, as for
   // electromagnetism (field_constraints.h): max |ρ| + Σ_b ‖D_b⁻‖∞ max |E_b|/e²,
@@ -157,6 +161,7 @@ ChargedNodes ObserveWindow(const ChargedFieldSystem<Model, d>& s,
       const double weight = D.NormWeight(i) * s.space_grid().NormWeight(j);
       out.gauss_action[n0 + j] =
           scale > 0 ? std::abs(total(i, j)) / weight / scale : 0.0;
+      out.textbook_absolute[n0 + j] = std::abs(div[j] - out.charge[n0 + j]);
       out.gauss_textbook[n0 + j] =
           scale_tb > 0 ? std::abs(div[j] - out.charge[n0 + j]) / scale_tb : 0.0;
     }
