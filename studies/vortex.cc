@@ -110,6 +110,30 @@ std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
   return x;
 }
 
+std::vector<int> PlaquetteWindings(const sbp::SpaceGrid<double>& grid,
+                                   const std::vector<double>& x) {
+  constexpr int m = Layout::m;
+  auto phi = [&](int j) {
+    return Complex(x[j * m + Layout::kRe], x[j * m + Layout::kIm]);
+  };
+  // arg(φ̄_j e^{−ihA_b} φ_k) along the link (j, b), and h A_b.
+  auto link = [&](int j, int b) {
+    const double ha = grid.axis(b).dx() * x[j * m + Layout::A(b)];
+    return std::arg(std::conj(phi(j)) * std::polar(1.0, -ha) *
+                    phi(action::NextOn(grid, j, b))) +
+           ha;
+  };
+  std::vector<int> w(grid.points());
+  for (int j = 0; j < grid.points(); ++j) {
+    const int right = action::NextOn(grid, j, 0),
+              up = action::NextOn(grid, j, 1);
+    // Counter-clockwise: the links' (arg + hA) sum to Σ arg + h²F.
+    const double total = link(j, 0) + link(right, 1) - link(up, 0) - link(j, 1);
+    w[j] = int(std::lround(total / (2 * M_PI)));
+  }
+  return w;
+}
+
 VortexStatic RelaxVortexPair(int n, double length, double residual) {
   VortexStatic out{.n = n, .length = length, .h = length / n};
   const auto grid = VortexSquare(n, length);

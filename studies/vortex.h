@@ -41,6 +41,12 @@ sbp::SpaceGrid<double> VortexSquare(int n, double length);
 std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
                                      double length);
 
+// The winding of each plaquette (at its lower-left point j), gauge
+// invariant: (Σ_links arg(φ̄_j e^{−ihA} φ_k) + h²F)/(2π) around it, an
+// integer; a vortex's plaquette has +1, an antivortex's −1.
+std::vector<int> PlaquetteWindings(const sbp::SpaceGrid<double>& grid,
+                                   const std::vector<double>& x);
+
 // The relaxed pair on n × n points of [−L/2, L/2)².
 struct VortexStatic {
   int n = 0;
