@@ -19,7 +19,8 @@ using Complex = std::complex<double>;
 // Jacobi's ϑ₁(u | τ = i) = 2 Σ_{k≥0} (−1)^k q^{(k+½)²} sin((2k+1)u), q =
 // e^{−π}: zeros at u = π(a + ib) for integers a, b, simple, and ϑ₁(u + π) =
 // −ϑ₁(u), ϑ₁(u + πτ) = −q⁻¹ e^{−2iu} ϑ₁(u) (Whittaker & Watson, A Course of
-// Modern Analysis 1927, ch. 21). For |Im u| ≤ π the terms fall as e^{−π k²}.
+// Modern Analysis 1927, ch. 21). For |Im u| ≤ π/2 (|y| ≤ L/2) the terms fall
+// as e^{−π k²}.
 Complex Theta1(Complex u) {
   Complex s = 0;
   for (int k = 0; k < 8; ++k)

@@ -87,9 +87,9 @@ int NewtonPolish(const fields::ScalarQed& model,
   const int n = int(x.size());
   std::vector<double> g(x.size());
   PatternedMatrix hessian;
-  // LDLᵀ, not Cholesky: the relaxed vortex pair of studies/vortex.h is not
-  // a minimum of U, CHOLMOD's supernodal LLᵀ refused H + μI there as not
-  // positive definite (48² and 96² points).
+  // LDLᵀ, not Cholesky: CHOLMOD's supernodal LLᵀ refused H + μI as not
+  // positive definite at the vortex pair of studies/vortex.h (48² and 96²
+  // points; a negative eigenvalue or round-off along the gauge directions).
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   int k = 0;
   for (; k < steps; ++k) {
