@@ -106,8 +106,8 @@ void March(const Args& a) {
       "%.1e (%d L-BFGS iterations, %d Newton steps, %.1f s)\n",
       a.march, a.length, pair.h, pair.deficit, pair.residual, pair.iterations,
       pair.newton, pair.seconds);
-  const auto r =
-      vivp::studies::MarchVortexPair(pair, a.op, a.window, a.dt, a.windows);
+  const auto r = vivp::studies::MarchVortexPair(pair, a.op, a.window, a.dt,
+                                                a.windows, a.cholmod);
   std::printf(
       "%s, window %d, dt %g, %s: %s, %d windows to t = %g, %lld Newton "
       "iterations\n  max | |φ|(t) − |φ|(0) | = %.3e\n  max |Δ energy "

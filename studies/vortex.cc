@@ -19,7 +19,8 @@ using Complex = std::complex<double>;
 // Jacobi's ϑ₁(u | τ = i) = 2 Σ_{k≥0} (−1)^k q^{(k+½)²} sin((2k+1)u), q =
 // e^{−π}: zeros at u = π(a + ib) for integers a, b, simple, and ϑ₁(u + π) =
 // −ϑ₁(u), ϑ₁(u + πτ) = −q⁻¹ e^{−2iu} ϑ₁(u) (Whittaker & Watson, A Course of
-// Modern Analysis 1927, ch. 21). For |Im u| ≤ π the terms fall as e^{−π k²}.
+// Modern Analysis 1927, ch. 21). For |Im u| ≤ π/2 (|y| ≤ L/2) the terms fall
+// as e^{−π k²}.
 Complex Theta1(Complex u) {
   Complex s = 0;
   for (int k = 0; k < 8; ++k)
@@ -67,6 +68,65 @@ double CoreTwist(double px, double py, int b, double h, double cx, double cy,
 
 }  // namespace
 
+namespace {
+
+struct Radial {
+  double f, a;
+};
+Radial Bogomolny(int n, double r, Radial s) {
+  return {n / r * s.f * (1 - s.a), r / n * (1 - s.f * s.f)};
+}
+// The energy density times r (e = v = λ = 1).
+double RadialDensity(int n, double r, Radial s) {
+  const Radial d = Bogomolny(n, r, s);
+  return r * (d.f * d.f + n * n * s.f * s.f * (1 - s.a) * (1 - s.a) / (r * r) +
+              n * n * d.a * d.a / (2 * r * r) +
+              0.5 * (1 - s.f * s.f) * (1 - s.f * s.f));
+}
+// +1: f passed 1; −1: f turned down; 0: reached r_max. The energy and the
+// radius reached into out.
+int Shoot(int n, double c, RadialVortex& out) {
+  const double dr = 1e-4, r_max = 30;
+  double r = 1e-4;
+  Radial s{c * std::pow(r, n), r * r / (2 * n)};
+  auto at = [&](Radial base, Radial k, double w) {
+    return Radial{base.f + w * k.f, base.a + w * k.a};
+  };
+  out.energy = 0;
+  for (; r < r_max; r += dr) {
+    const Radial k1 = Bogomolny(n, r, s),
+                 k2 = Bogomolny(n, r + dr / 2, at(s, k1, dr / 2)),
+                 k3 = Bogomolny(n, r + dr / 2, at(s, k2, dr / 2)),
+                 k4 = Bogomolny(n, r + dr, at(s, k3, dr));
+    const Radial next{s.f + dr / 6 * (k1.f + 2 * k2.f + 2 * k3.f + k4.f),
+                      s.a + dr / 6 * (k1.a + 2 * k2.a + 2 * k3.a + k4.a)};
+    const Radial mid{(s.f + next.f) / 2, (s.a + next.a) / 2};
+    out.energy +=
+        2 * M_PI * dr / 6 *
+        (RadialDensity(n, r, s) + 4 * RadialDensity(n, r + dr / 2, mid) +
+         RadialDensity(n, r + dr, next));
+    s = next;
+    out.radius = r + dr;
+    if (s.f > 1) return 1;
+    if (k1.f < 0) return -1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+RadialVortex ShootRadialVortex(int n) {
+  double lo = 0.01, hi = 10;
+  RadialVortex out;
+  for (int k = 0; k < 60; ++k) {
+    const double c = 0.5 * (lo + hi);
+    (Shoot(n, c, out) > 0 ? hi : lo) = c;
+  }
+  Shoot(n, lo, out);
+  out.slope = lo;
+  return out;
+}
+
 fields::ScalarQed CriticalHiggs() {
   fields::ScalarQed model;
   model.lambda = 1.0;
@@ -108,6 +168,30 @@ std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
     }
   }
   return x;
+}
+
+std::vector<int> PlaquetteWindings(const sbp::SpaceGrid<double>& grid,
+                                   const std::vector<double>& x) {
+  constexpr int m = Layout::m;
+  auto phi = [&](int j) {
+    return Complex(x[j * m + Layout::kRe], x[j * m + Layout::kIm]);
+  };
+  // arg(φ̄_j e^{−ihA_b} φ_k) along the link (j, b), and h A_b.
+  auto link = [&](int j, int b) {
+    const double ha = grid.axis(b).dx() * x[j * m + Layout::A(b)];
+    return std::arg(std::conj(phi(j)) * std::polar(1.0, -ha) *
+                    phi(action::NextOn(grid, j, b))) +
+           ha;
+  };
+  std::vector<int> w(grid.points());
+  for (int j = 0; j < grid.points(); ++j) {
+    const int right = action::NextOn(grid, j, 0),
+              up = action::NextOn(grid, j, 1);
+    // Counter-clockwise: the links' (arg + hA) sum to Σ arg + h²F.
+    const double total = link(j, 0) + link(right, 1) - link(up, 0) - link(j, 1);
+    w[j] = int(std::lround(total / (2 * M_PI)));
+  }
+  return w;
 }
 
 VortexStatic RelaxVortexPair(int n, double length, double residual) {

@@ -23,6 +23,21 @@
 
 namespace vivp::studies {
 
+// The Bogomolny equations of a vortex of winding n > 0 in this
+// normalization, φ = v f(r) e^{inθ}, A_θ = n a(r)/r:
+//   f' = (n/r) f (1 − a),   a' = (e² v² r/n)(1 − f²),
+// shot from f ≈ c rⁿ, a ≈ e²v² r²/(2n) at r → 0 (bisection on c until f
+// neither turns down nor passes 1), and the continuum energy
+// 2π ∫ r dr [v²f'² + v²n²f²(1 − a)²/r² + n²a'²/(2e²r²) + (λ/2)v⁴(1 − f²)²]
+// along the shot (classical Runge–Kutta, Simpson), e = v = 1, λ = e²: the
+// check of the bound's normalization apart from the lattice.
+struct RadialVortex {
+  double slope = 0;   // c, f ≈ c rⁿ at the centre
+  double energy = 0;  // to the radius where the shot leaves
+  double radius = 0;
+};
+RadialVortex ShootRadialVortex(int n);
+
 // e = v = 1, λ = e² = 1, m² = 0: both the scalar's and the photon's mass is
 // √2 e v.
 fields::ScalarQed CriticalHiggs();
@@ -40,6 +55,12 @@ sbp::SpaceGrid<double> VortexSquare(int n, double length);
 // that φ and A are exactly periodic.
 std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
                                      double length);
+
+// The winding of each plaquette (at its lower-left point j), gauge
+// invariant: (Σ_links arg(φ̄_j e^{−ihA} φ_k) + h²F)/(2π) around it, an
+// integer; a vortex's plaquette has +1, an antivortex's −1.
+std::vector<int> PlaquetteWindings(const sbp::SpaceGrid<double>& grid,
+                                   const std::vector<double>& x);
 
 // The relaxed pair on n × n points of [−L/2, L/2)².
 struct VortexStatic {

@@ -12,8 +12,8 @@
 // U's gauge directions are flat, which a quasi-Newton method does not need
 // removed. Its line search compares values of U, and stops where their
 // changes reach round-off (a residual near 1e-7); Newton steps on U's
-// sparse Hessian, its gauge directions damped by 1e-12 as in
-// normal_solver.h, take the residual from there to round-off.
+// sparse Hessian, its gauge directions damped as in normal_solver.h, take
+// the residual from there to round-off.
 #pragma once
 
 #include <string>
