@@ -9,7 +9,9 @@
 // - fig_vortex_scattering: the tracks, coloured by t (the two antivortices
 //   that make the torus neutral sit at (8, ±6)).
 //
-// Usage: fig_vortex_scattering [OUTPUT_DIR [N [SPEED]]]      (a few minutes)
+// Usage: fig_vortex_scattering [OUTPUT_DIR [N [SPEED [DT]]]]  (a few minutes)
+//   N points per axis (Δt = 3.2/N unless DT is given: Δt·ω_max ≈ 0.6, below
+//   SBP21's limit 0.7)
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
   vivp::studies::ScatteringSetup s;
   if (argc > 2) s.n = std::atoi(argv[2]);
   if (argc > 3) s.speed = std::atof(argv[3]);
+  s.dt = argc > 4 ? std::atof(argv[4]) : 3.2 / s.n;
   const auto r = vivp::studies::ScatterVortices(s);
   std::printf(
       "%d² points on [−%g, %g)², speed %g, %s windows of %d, Δt = %g: %s\n"
