@@ -5,70 +5,16 @@
 #include <cmath>
 #include <complex>
 
+#include "core/action/vortex_tracks.h"
 #include "solvers/spacetime/charged_march.h"
 #include "solvers/spacetime/charged_static.h"
+#include "solvers/spacetime/vortex_data.h"
 
 namespace vivp::studies {
 
 namespace {
 
 constexpr int kDim = 2;
-using Layout = action::ChargedLayout<kDim>;
-using Complex = std::complex<double>;
-
-// Jacobi's ϑ₁(u | τ = i) = 2 Σ_{k≥0} (−1)^k q^{(k+½)²} sin((2k+1)u), q =
-// e^{−π}: zeros at u = π(a + ib) for integers a, b, simple, and ϑ₁(u + π) =
-// −ϑ₁(u), ϑ₁(u + πτ) = −q⁻¹ e^{−2iu} ϑ₁(u) (Whittaker & Watson, A Course of
-// Modern Analysis 1927, ch. 21). For |Im u| ≤ π/2 (|y| ≤ L/2) the terms fall
-// as e^{−π k²}.
-Complex Theta1(Complex u) {
-  Complex s = 0;
-  for (int k = 0; k < 8; ++k)
-    s += (k % 2 ? -2.0 : 2.0) * std::exp(-M_PI * (k + 0.5) * (k + 0.5)) *
-         std::sin(double(2 * k + 1) * u);
-  return s;
-}
-
-// The pair's periodic phase function on the torus of side L: a zero at z₁
-// = L/4, a pole at z₂ = −L/4. The ratio of ϑ₁'s is periodic in x; shifted
-// by iL it gains e^{−2iπ(z₂ − z₁)/L} = −1, which e^{iπy/L} undoes.
-Complex PairPhase(double x, double y, double length) {
-  const Complex z(x, y), z1(length / 4, 0), z2(-length / 4, 0);
-  return Theta1(M_PI * (z - z1) / length) / Theta1(M_PI * (z - z2) / length) *
-         std::polar(1.0, M_PI * y / length);
-}
-
-// The displacement from c to p on the torus, minimum image.
-double Wrap(double d, double length) {
-  return d - length * std::round(d / length);
-}
-
-double Profile(double r) { return std::tanh(r); }             // f
-double Gauge(double r) { return std::pow(std::tanh(r), 2); }  // a
-
-// ∫ (1 − a(r)) dθ along the link from p, length h along axis b, about the
-// centre c (minimum image): 8-point Gauss–Legendre.
-double CoreTwist(double px, double py, int b, double h, double cx, double cy,
-                 double length) {
-  static const double node[4] = {0.1834346424956498, 0.5255324099163290,
-                                 0.7966664774136267, 0.9602898564975363};
-  static const double weight[4] = {0.3626837833783620, 0.3137066458778873,
-                                   0.2223810344533745, 0.1012285362903763};
-  double s = 0;
-  for (int k = 0; k < 8; ++k) {
-    const double t = 0.5 * h * (1 + (k < 4 ? -node[k] : node[k - 4]));
-    const double w = 0.5 * h * weight[k % 4];
-    const double dx = Wrap(px + (b == 0 ? t : 0) - cx, length);
-    const double dy = Wrap(py + (b == 1 ? t : 0) - cy, length);
-    const double r2 = dx * dx + dy * dy, r = std::sqrt(r2);
-    s += w * (1 - Gauge(r)) * (b == 0 ? -dy : dx) / r2;
-  }
-  return s;
-}
-
-}  // namespace
-
-namespace {
 
 struct Radial {
   double f, a;
@@ -145,52 +91,16 @@ sbp::SpaceGrid<double> VortexSquare(int n, double length) {
 
 std::vector<double> VortexPairAnsatz(const sbp::SpaceGrid<double>& grid,
                                      double length) {
-  constexpr int m = Layout::m;
-  const double v = 1.0, c = length / 4;  // v of CriticalHiggs
-  std::vector<double> x(std::size_t(grid.points()) * m, 0.0);
-  for (int j = 0; j < grid.points(); ++j) {
-    const double px = grid.x(j, 0), py = grid.x(j, 1);
-    const double r1 = std::hypot(Wrap(px - c, length), py);
-    const double r2 = std::hypot(Wrap(px + c, length), py);
-    const Complex f = PairPhase(px, py, length);
-    const Complex phi = v * Profile(r1) * Profile(r2) * f / std::abs(f);
-    x[j * m + Layout::kRe] = phi.real();
-    x[j * m + Layout::kIm] = phi.imag();
-    for (int b = 0; b < kDim; ++b) {
-      const double h = grid.axis(b).dx();
-      const Complex next =
-          PairPhase(px + (b == 0 ? h : 0), py + (b == 1 ? h : 0), length);
-      // ∫ ∇Θ · dl = arg F(end)/F(start), minus the cores' (1 − a)∇θ.
-      const double line = std::arg(next / f) -
-                          CoreTwist(px, py, b, h, c, 0, length) +
-                          CoreTwist(px, py, b, h, -c, 0, length);
-      x[j * m + Layout::A(b)] = line / h;
-    }
-  }
-  return x;
+  return spacetime::VortexAnsatz(grid, 1.0,  // v of CriticalHiggs
+                                 {{length / 4, 0, 1}, {-length / 4, 0, -1}});
 }
 
 std::vector<int> PlaquetteWindings(const sbp::SpaceGrid<double>& grid,
                                    const std::vector<double>& x) {
-  constexpr int m = Layout::m;
-  auto phi = [&](int j) {
-    return Complex(x[j * m + Layout::kRe], x[j * m + Layout::kIm]);
-  };
-  // arg(φ̄_j e^{−ihA_b} φ_k) along the link (j, b), and h A_b.
-  auto link = [&](int j, int b) {
-    const double ha = grid.axis(b).dx() * x[j * m + Layout::A(b)];
-    return std::arg(std::conj(phi(j)) * std::polar(1.0, -ha) *
-                    phi(action::NextOn(grid, j, b))) +
-           ha;
-  };
   std::vector<int> w(grid.points());
-  for (int j = 0; j < grid.points(); ++j) {
-    const int right = action::NextOn(grid, j, 0),
-              up = action::NextOn(grid, j, 1);
-    // Counter-clockwise: the links' (arg + hA) sum to Σ arg + h²F.
-    const double total = link(j, 0) + link(right, 1) - link(up, 0) - link(j, 1);
-    w[j] = int(std::lround(total / (2 * M_PI)));
-  }
+  action::Complex corners[4];
+  for (int j = 0; j < grid.points(); ++j)
+    w[j] = action::PlaquetteWinding(grid, x.data(), j, corners);
   return w;
 }
 

@@ -145,6 +145,9 @@ StaticReport RelaxChargedSlice2(const fields::ScalarQed& model,
   const ceres::GradientProblem problem(f);  // owns f
   ceres::GradientProblemSolver::Options o;
   o.line_search_direction_type = ceres::LBFGS;
+  // Quiet: a line search that stops at round-off is the expected end
+  // (the Newton steps below take over), not a warning for the user.
+  o.logging_type = ceres::SILENT;
   o.max_lbfgs_rank = options.memory;
   o.max_num_iterations = options.max_iterations;
   // Ceres' test is max |g| with g the gradient of U, which carries Hˣ.
