@@ -70,6 +70,16 @@ report::Slice2d PlaneOf(const scene::FieldScene& s,
   return out;
 }
 
+// |E| of a charged field's slice on two axes (values |φ|, E_x, E_y, ρ).
+report::Slice2d ElectricOfCharged(const report::Slice2d& s) {
+  report::Slice2d e{.x = s.x, .y = s.y, .values = {}, .t = s.t};
+  const std::size_t n = s.x.size() * s.y.size();
+  for (std::size_t p = 0; p < n; ++p)
+    e.values.push_back(std::hypot(s.values[p * s.components + 1],
+                                  s.values[p * s.components + 2]));
+  return e;
+}
+
 // vortices.csv (t, x, y, winding of every vortex of every kept slice) and
 // tracks.png, of a charged field on two axes.
 std::vector<std::string> WriteVortexTracks(const fs::path& dir,
@@ -171,12 +181,18 @@ std::vector<std::string> WriteSlicePictures(
     const std::size_t k = Nearest(run.solution.t, s.output.heat_maps[i]);
     const std::string stem = "heat_map_" + std::to_string(i);
     try {
+      const report::Slice2d slice = PlaneOf(s, grid, run, k);
       report::SliceMap(
-          dir, stem, PlaneOf(s, grid, run, k),
+          dir, stem, slice,
           {.title = title + plane, .label = label, .symmetric = symmetric});
       files.push_back(stem + ".png");
       pictures["heat_maps"].push_back(
           {{"file", stem + ".png"}, {"t", run.solution.t[k]}});
+      if (s.Charged()) {  // and |E| beside |φ|
+        report::SliceMap(dir, stem + "_E", ElectricOfCharged(slice),
+                         {.title = title, .label = "|E|", .symmetric = false});
+        files.push_back(stem + "_E.png");
+      }
     } catch (const std::exception& e) {
       warnings.push_back("no " + stem + ".png: " + e.what());
     }

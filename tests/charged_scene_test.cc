@@ -192,8 +192,8 @@ BOOST_AUTO_TEST_CASE(a_vortex_pair_stays_and_is_tracked) {
   BOOST_TEST(gauss < 1e-12);
   // A static solution: the energy moves by round-off (measured 1e-14).
   BOOST_TEST(energy < 1e-10);
-  for (const char* f :
-       {"field.h5", "vortices.csv", "tracks.png", "heat_map_0.png"})
+  for (const char* f : {"field.h5", "vortices.csv", "tracks.png",
+                        "heat_map_0.png", "heat_map_0_E.png"})
     BOOST_TEST(fs::exists(out / f), f);
   // Two zeros of φ at every one of the 8 slices, windings +1 and −1.
   const std::string csv = Slurp(out / "vortices.csv");
