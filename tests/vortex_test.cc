@@ -49,12 +49,23 @@ BOOST_AUTO_TEST_CASE(the_radial_bogomolny_vortex_has_energy_2_pi_v2_n) {
   }
 }
 
+// Under AddressSanitizer the 192² relaxation takes 7 of the test's 8
+// minutes; 48² and 96² walk the same code paths (memory errors do not
+// depend on the grid), so the sanitizer build fits the order on those two
+// and the Release build also checks the bound at h = 0.125.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kFinest = false;
+#else
+constexpr bool kFinest = true;
+#endif
+
 BOOST_AUTO_TEST_CASE(the_pair_meets_the_bogomolny_bound_at_second_order) {
   // Separation L/2 = 12: the pair's attraction, ∝ exp(−√2 e v · 12) ≈ 4e-8,
   // is far below the lattice's error at every grid here.
   const double length = 24;
   std::vector<double> hs, deficits;
   for (int n : {48, 96, 192}) {
+    if (n == 192 && !kFinest) break;
     const auto r = vivp::studies::RelaxVortexPair(n, length);
     BOOST_TEST_MESSAGE(
         "h = " << r.h << ": U = " << r.energy
@@ -72,10 +83,11 @@ BOOST_AUTO_TEST_CASE(the_pair_meets_the_bogomolny_bound_at_second_order) {
   }
   const auto fit = vivp::studies::FitPower(hs, deficits);
   BOOST_TEST_MESSAGE("U/4π − 1 ≈ " << fit.constant << " h^" << fit.order);
-  // Measured 2.016 (48, 96, 192 points), the lattice's second order.
+  // Measured 2.016 (48, 96, 192 points; 2.025 on 48 and 96), the
+  // lattice's second order.
   BOOST_TEST(std::abs(fit.order - 2) < 0.05);
   // Measured −7.24e-4 at h = 0.125.
-  BOOST_TEST(std::abs(deficits.back()) < 1e-3);
+  if (kFinest) BOOST_TEST(std::abs(deficits.back()) < 1e-3);
 }
 
 BOOST_AUTO_TEST_CASE(the_relaxed_pair_stays_static_under_the_march) {

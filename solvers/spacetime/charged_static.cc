@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <chrono>
@@ -90,7 +91,10 @@ int NewtonPolish(const fields::ScalarQed& model,
   // LDLᵀ, not Cholesky: CHOLMOD's supernodal LLᵀ refused H + μI as not
   // positive definite at the vortex pair of studies/vortex.h (48² and 96²
   // points; a negative eigenvalue or round-off along the gauge directions).
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  // CHOLMOD's simplicial LDLᵀ rather than Eigen's: the same factorization,
+  // from a library the sanitizer build does not instrument (there Eigen's
+  // took most of the vortex test's 8 minutes).
+  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
   int k = 0;
   for (; k < steps; ++k) {
     action::ChargedSlicePotential<kDim>(model, grid, inv_g2, x.data(),
