@@ -21,24 +21,11 @@
 #include <string>
 #include <vector>
 
+#include "core/linalg/fit.h"
 #include "solvers/variational/resolution.h"
 #include "studies/charged_waves.h"
 
 namespace {
-
-// The slope of log y against log x, least squares.
-double Slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = double(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double a = std::log(x[i]), b = std::log(y[i]);
-    sx += a;
-    sy += b;
-    sxx += a * a;
-    sxy += a * b;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
 
 // The textbook law against Δt (n = 32) and against Δx at Δt = 0.02, windows
 // of 16: the action's law and the textbook one differ in how the time
@@ -55,7 +42,8 @@ void Orders() {
       std::printf("  %s, 32 points, Δt = %.4f: |textbook| %.2e\n", op, r.dt,
                   r.textbook_absolute);
     }
-    std::printf("  %s: order in Δt %.2f\n", op, Slope(dt, tb));
+    std::printf("  %s: order in Δt %.2f\n", op,
+                vivp::linalg::FitPowerLaw(dt, tb).order);
     std::vector<double> h, tx;
     for (int n : {32, 64, 128}) {
       const double hx = 20.0 / n, omega = std::sqrt(1 + 4 / (hx * hx));
@@ -66,7 +54,8 @@ void Orders() {
       std::printf("  %s, %d points, Δt = %.4f: |textbook| %.2e\n", op, n, r.dt,
                   r.textbook_absolute);
     }
-    std::printf("  %s: order in Δx %.2f\n", op, Slope(h, tx));
+    std::printf("  %s: order in Δx %.2f\n", op,
+                vivp::linalg::FitPowerLaw(h, tx).order);
   }
 }
 

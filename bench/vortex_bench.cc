@@ -94,7 +94,7 @@ void Static(const Args& a) {
                 std::log(ds[k - 1] / ds[k]) / std::log(hs[k - 1] / hs[k]));
   if (hs.size() > 1) {
     const auto fit = vivp::studies::FitPower(hs, ds);
-    std::printf("least-squares fit: U/4π − 1 ≈ %.4f h^%.3f\n", fit.constant,
+    std::printf("least-squares fit: U/4π − 1 ≈ %.4f h^%.3f\n", fit.prefactor,
                 fit.order);
   }
 }

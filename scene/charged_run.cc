@@ -130,18 +130,10 @@ template <class System>
 void Track(const System& sys, const std::vector<double>& y, int i,
            const spacetime::ChargedSliceState* handed, double t,
            FieldRun& run) {
-  std::vector<double> slice;
-  const double* x = handed ? handed->x.data() : nullptr;
-  if (!handed) {
-    const int nx = sys.space_points();
-    slice.resize(std::size_t(nx) * System::m);
-    for (int j = 0; j < nx; ++j)
-      for (int a = 0; a < System::m; ++a)
-        slice[std::size_t(j) * System::m + a] = y[sys.Phi(i, j, a)];
-    x = slice.data();
-  }
-  for (const auto& v : action::FindVortices(sys.space_grid(), x))
-    run.vortices.push_back({t, v.x, v.y, v.winding});
+  const auto found =
+      handed ? action::FindVortices(sys.space_grid(), handed->x.data())
+             : action::FindVorticesAtNode(sys, y.data(), i);
+  for (const auto& v : found) run.vortices.push_back({t, v.x, v.y, v.winding});
 }
 
 template <int d>

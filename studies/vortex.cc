@@ -6,6 +6,7 @@
 #include <complex>
 
 #include "core/action/vortex_tracks.h"
+#include "core/linalg/fit.h"
 #include "solvers/spacetime/charged_march.h"
 #include "solvers/spacetime/charged_static.h"
 #include "solvers/spacetime/vortex_data.h"
@@ -125,18 +126,11 @@ VortexStatic RelaxVortexPair(int n, double length, double residual) {
   return out;
 }
 
-PowerFit FitPower(const std::vector<double>& h, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = double(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    const double a = std::log(h[i]), b = std::log(std::abs(y[i]));
-    sx += a;
-    sy += b;
-    sxx += a * a;
-    sxy += a * b;
-  }
-  const double p = (k * sxy - sx * sy) / (k * sxx - sx * sx);
-  return {p, std::exp((sy - p * sx) / k)};
+linalg::PowerLawFit FitPower(const std::vector<double>& h,
+                             const std::vector<double>& y) {
+  std::vector<double> magnitude;
+  for (double v : y) magnitude.push_back(std::abs(v));
+  return linalg::FitPowerLaw(h, magnitude);
 }
 
 namespace {

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/linalg/fit.h"
 #include "core/sbp/space_grid.h"
 #include "problems/fields/charged.h"
 
@@ -78,11 +79,9 @@ struct VortexStatic {
 };
 VortexStatic RelaxVortexPair(int n, double length, double residual = 1e-11);
 
-// The order p and constant C of deficit ≈ C h^p by least squares in logs.
-struct PowerFit {
-  double order = 0, constant = 0;
-};
-PowerFit FitPower(const std::vector<double>& h, const std::vector<double>& y);
+// The order p and constant C of |deficit| ≈ C h^p (core/linalg/fit.h).
+linalg::PowerLawFit FitPower(const std::vector<double>& h,
+                             const std::vector<double>& y);
 
 // The relaxed pair as data (π = 0, E = 0: ρ = 0, Gauss's law holds)
 // marched `windows` windows of `window` nodes of `op` at step dt, Newton's

@@ -19,12 +19,7 @@ using System = spacetime::ChargedSystem2;
 // The vortices of node i of a window.
 void Track(const System& sys, const std::vector<double>& y, int i, double t,
            std::vector<TrackSample>& out) {
-  const int nx = sys.space_points();
-  std::vector<double> slice(std::size_t(nx) * System::m);
-  for (int j = 0; j < nx; ++j)
-    for (int a = 0; a < System::m; ++a)
-      slice[std::size_t(j) * System::m + a] = y[sys.Phi(i, j, a)];
-  for (const auto& v : action::FindVortices(sys.space_grid(), slice.data()))
+  for (const auto& v : action::FindVorticesAtNode(sys, y.data(), i))
     out.push_back({t, v.x, v.y, v.winding});
 }
 

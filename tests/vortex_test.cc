@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_CASE(the_pair_meets_the_bogomolny_bound_at_second_order) {
     deficits.push_back(r.deficit);
   }
   const auto fit = vivp::studies::FitPower(hs, deficits);
-  BOOST_TEST_MESSAGE("U/4π − 1 ≈ " << fit.constant << " h^" << fit.order);
+  BOOST_TEST_MESSAGE("U/4π − 1 ≈ " << fit.prefactor << " h^" << fit.order);
   // Measured 2.016 (48, 96, 192 points; 2.025 on 48 and 96), the
   // lattice's second order.
   BOOST_TEST(std::abs(fit.order - 2) < 0.05);

@@ -104,4 +104,17 @@ inline std::vector<Vortex> FindVortices(const sbp::SpaceGrid<double>& grid,
   return out;
 }
 
+// The vortices of node i of a window of a charged field's system
+// (charged_field.h): its slice of the unknowns y, then FindVortices.
+template <class System>
+std::vector<Vortex> FindVorticesAtNode(const System& sys, const double* y,
+                                       int i) {
+  const int nx = sys.space_points();
+  std::vector<double> slice(std::size_t(nx) * System::m);
+  for (int j = 0; j < nx; ++j)
+    for (int a = 0; a < System::m; ++a)
+      slice[std::size_t(j) * System::m + a] = y[sys.Phi(i, j, a)];
+  return FindVortices(sys.space_grid(), slice.data());
+}
+
 }  // namespace vivp::action
