@@ -255,7 +255,13 @@ void ChargedSystemData(const FieldScene& s, std::vector<double>& phi,
 FieldRun RunChargedScene(
     const FieldScene& s,
     const std::function<void(int, int, double)>& on_window) {
-  return s.Dim() == 2 ? Run<2>(s, on_window) : Run<1>(s, on_window);
+  if (s.Dim() == 1) return Run<1>(s, on_window);
+  if (!s.phi0.empty()) return Run<2>(s, on_window);
+  FieldScene ready = s;
+  const double residual = PrepareVortexStart(ready);
+  FieldRun run = Run<2>(ready, on_window);
+  run.relaxation_residual = residual;
+  return run;
 }
 
 }  // namespace vivp::scene

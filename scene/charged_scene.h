@@ -35,9 +35,16 @@ double ChargedOmegaMax(const FieldScene& s);
 void ChargedSystemData(const FieldScene& s, std::vector<double>& phi,
                        std::vector<double>& pi);
 
-// The march of the scene; an under-resolved grid or a window that fails
-// its Newton solve or its Gauss check returns solution.status.converged =
-// false with the reason.
+// A vortex profile's start (s.phi0, s.phi_t0): the ansatz relaxed to a
+// static critical point (solvers/spacetime/vortex_data.h); returns the
+// relaxation's residual. Throws a SceneError at s.where_initial when the
+// relaxation moved a vortex by more than a spacing or annihilated one, or
+// when the moving data carry a net charge.
+double PrepareVortexStart(FieldScene& s);
+
+// The march of the scene (a vortex profile's start relaxed first); an
+// under-resolved grid or a window that fails its Newton solve or its Gauss
+// check returns solution.status.converged = false with the reason.
 FieldRun RunChargedScene(
     const FieldScene& s,
     const std::function<void(int, int, double)>& on_window);

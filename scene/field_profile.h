@@ -99,14 +99,16 @@ ProfileFormulas MakeProfileNd(const TomlReader& r, const toml::table& initial,
 
 // The profiles of a charged field (read_charged.cc): their names and keys,
 // the formula of (Re φ, Im φ, A_b) and (Re π, Im π, ∂_tA_b), and the
-// refusal of data with a net charge on the torus.
+// refusal of data with a net charge on the circle (one axis; a vortex
+// start is checked when the run relaxes it).
 const std::vector<std::string>& ChargedProfileNames(int d);
 std::vector<ProfileKey> ChargedProfileKeys(const FieldScene& s);
 ProfileFormulas MakeChargedProfile(const ProfileValues& p, const FieldScene& s);
 void CheckNeutral(const TomlReader& r, const toml::node& at,
                   const FieldScene& s);
-// On two axes: s.phi0 and s.phi_t0 of the vortex profile named in s.initial
-// (its keys read from `t`; refusals at `at`).
+// On two axes: the checks of the vortex profile named in s.initial (its keys
+// read from `t`; refusals at `at`) and s.where_initial; s.phi0 stays empty
+// until the run relaxes the start (charged_scene.h).
 void MakeVortexProfile(const TomlReader& r, const toml::table& t,
                        const toml::node& at, FieldScene& s);
 

@@ -46,6 +46,8 @@ struct FieldRun {
     int winding = 0;
   };
   std::vector<VortexAt> vortices;
+  // A vortex profile: the residual its start was relaxed to; NaN otherwise.
+  double relaxation_residual = NAN;
 };
 
 // on_window(done, total, t) after each window (see FieldSolveOptions).

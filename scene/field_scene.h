@@ -156,6 +156,10 @@ struct FieldScene : FieldAxis {
   // "FILE:LINE:COL: " of [time] points, where an under-resolved grid is
   // reported, and warnings for the reader (an accepted jump).
   std::string where_time_points;
+  // "FILE:LINE:COL: " of a vortex profile's key, where a start whose
+  // relaxation moved or annihilated a vortex is reported (phi0 is then
+  // empty until the run relaxes it: charged_scene.h).
+  std::string where_initial;
   std::vector<std::string> warnings;
 
   bool Wants(const std::string& diagnostic) const;

@@ -12,7 +12,6 @@
 #include "scene/field_sections.h"
 #include "scene/text.h"
 #include "solvers/spacetime/charged_march.h"
-#include "solvers/spacetime/vortex_data.h"
 
 namespace vivp::scene::detail {
 
@@ -196,9 +195,10 @@ ProfileFormulas MakeChargedProfile(const ProfileValues& p,
   return f;
 }
 
-// The vortex profiles on a square torus (solvers/spacetime/vortex_data.h):
-// relaxed from the ansatz, refused when the relaxation moved a vortex by
-// more than a spacing or annihilated it.
+// The vortex profiles on a square torus: the reader checks what the
+// parameters alone decide; the relaxation from the ansatz, and its refusal
+// when a vortex moved or annihilated, belong to the run (PrepareVortexStart
+// in charged_scene.h), so that reading a scene stays cheap.
 void MakeVortexProfile(const TomlReader& r, const toml::table& t,
                        const toml::node& at, FieldScene& s) {
   const auto model = ChargedModel(s);
@@ -216,29 +216,12 @@ void MakeVortexProfile(const TomlReader& r, const toml::table& t,
            "a vortex needs the broken vacuum |φ| = v of an 'abelian_higgs' "
            "term with λ > 0 and v ≠ 0",
            "expected an 'abelian_higgs' term (λ = e² is critical coupling)");
-  const ProfileValues p{r, t, s};
-  const auto grid = s.Grid();
-  const bool pair = s.initial.profile == "vortex_pair";
-  const auto d =
-      pair ? spacetime::VortexPairData(model, grid, p["separation"])
-           : spacetime::VortexCollisionData(model, grid, p["offset"],
-                                            p["speed"], p["transition"]);
-  if (!(d.moved <= grid.axis(0).dx()))
-    p.Fail(pair ? "separation" : "offset",
-           "relaxing the static start moved a vortex by " +
-               FormatNumber(d.moved) + " (" + std::to_string(d.found) +
-               " zeros of φ left): the vortices attract, or annihilated",
-           "vortices farther apart, or critical coupling λ = e² (where like "
-           "vortices exert no force)");
-  const int given = 2 + 2;
-  s.phi0.assign(std::size_t(grid.points()) * given, 0.0);
-  s.phi_t0.assign(s.phi0.size(), 0.0);
-  for (int j = 0; j < grid.points(); ++j)
-    for (int a = 0; a < given; ++a) {
-      s.phi0[std::size_t(j) * given + a] = d.x[std::size_t(j) * 5 + a];
-      s.phi_t0[std::size_t(j) * given + a] = d.pi[std::size_t(j) * 5 + a];
-    }
-  s.initial.parameters["relaxation_residual"] = d.relax.residual;
+  const char* key =
+      s.initial.profile == "vortex_pair" ? "separation" : "offset";
+  const toml::node* n = t.get(key);
+  s.where_initial = r.Where(n ? *n : at);
+  s.phi0.clear();
+  s.phi_t0.clear();
   s.no_exact = "a charged field's scene has no exact solution";
 }
 
@@ -246,19 +229,12 @@ void CheckNeutral(const TomlReader& r, const toml::node& at,
                   const FieldScene& s) {
   std::vector<double> phi, pi;
   ChargedSystemData(s, phi, pi);
-  const std::string why =
-      s.Dim() == 2 ? spacetime::NetChargeReason<
-                         action::ChargedFieldSystem<fields::ScalarQed, 2>>(
-                         s.Grid(), phi, pi)
-                   : spacetime::NetChargeReason<
-                         action::ChargedFieldSystem<fields::ScalarQed, 1>>(
-                         s.Grid(), phi, pi);
+  const std::string why = spacetime::NetChargeReason<
+      action::ChargedFieldSystem<fields::ScalarQed, 1>>(s.Grid(), phi, pi);
   if (!why.empty())
     r.Fail(at, why,
-           s.Dim() == 2 ? "expected a smaller speed (the moving data's charge "
-                          "cancels between the two vortices)"
-                        : "expected packets at mirrored points (leave "
-                          "'center' well inside the domain)");
+           "expected packets at mirrored points (leave 'center' well inside "
+           "the domain)");
 }
 
 }  // namespace vivp::scene::detail

@@ -209,8 +209,7 @@ void ReadProfile(const TomlReader& r, const toml::table& root,
   }
   ReadProfileKeys(r, t, keys, s);
   if (s.Charged() && grid) {  // relaxed on the lattice, not a formula
-    MakeVortexProfile(r, t, p, s);
-    return CheckNeutral(r, p, s);
+    return MakeVortexProfile(r, t, p, s);
   }
   if (s.initial.profile == "csv") {
     const toml::node& f =
