@@ -12,6 +12,16 @@
 #include "solvers/variational/banded_lu.h"
 #include "studies/registry.h"
 
+// LAPACK's banded LU, the reference of BandedSubstitution_EqualsLapack.
+extern "C" {
+void dgbtrf_(const int* m, const int* n, const int* kl, const int* ku,
+             double* ab, const int* ldab, int* ipiv, int* info);
+void dgbtrs_(const char* trans, const int* n, const int* kl, const int* ku,
+             const int* nrhs, const double* ab, const int* ldab,
+             const int* ipiv, double* b, const int* ldb, int* info,
+             std::size_t trans_len);
+}
+
 using namespace vivp;
 using namespace vivp::variational;
 namespace bdata = boost::unit_test::data;
@@ -272,24 +282,33 @@ BOOST_AUTO_TEST_CASE(FitOrders_LeaveOutRowsThatDidNotConverge) {
   BOOST_TEST(std::isnan(study.orders.x));
 }
 
-// The per-window back-substitution (BandedLu::Substitute) against LAPACK's
-// dgbtrs on the same dgbtrf factors, over band shapes from a marched window's
-// (n about 50) to wider and degenerate ones (kl = 0, n smaller than the band):
-// the same operations in the same order, so the same solution to round-off,
-// and a small residual.
-BOOST_AUTO_TEST_CASE(BandedSubstitution_EqualsLapackDgbtrs) {
+// The per-window banded LU (BandedLu::FactorBand and Substitute) against
+// LAPACK's dgbtrf and dgbtrs, over band shapes from a marched window's (n
+// about 50) to wider and degenerate ones (kl = 0, n smaller than the band):
+// the same operations in the same order, so the same solution to round-off
+// (a BLAS with fused multiply-adds rounds differently), and a small
+// residual; and a singular band refused. The `narrow` shapes are a window's:
+// wide at the ends (closure rows, multipliers) and narrow inside, where the
+// factorization sweeps only the entries that can be nonzero.
+BOOST_AUTO_TEST_CASE(BandedSubstitution_EqualsLapack) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   struct Shape {
     int n, kl, ku;
+    int narrow = -1;  // ≥ 0: inside the first and last 10 rows, |i − j| ≤ it
   };
-  for (const Shape sh : {Shape{52, 5, 5}, Shape{52, 9, 3}, Shape{200, 12, 12},
-                         Shape{30, 0, 4}, Shape{7, 6, 6}, Shape{1, 0, 0}}) {
+  for (const Shape sh :
+       {Shape{52, 5, 5}, Shape{52, 9, 3}, Shape{200, 12, 12}, Shape{30, 0, 4},
+        Shape{7, 6, 6}, Shape{1, 0, 0}, Shape{100, 26, 18, 17},
+        Shape{100, 14, 6, 3}, Shape{60, 8, 8, 0}}) {
     linalg::BandedMatrix<double> a(sh.n, sh.kl, sh.ku);
     for (int i = 0; i < sh.n; ++i)
       for (int j = std::max(0, i - sh.kl); j <= std::min(sh.n - 1, i + sh.ku);
-           ++j)
+           ++j) {
+        const bool inside = i >= 10 && i < sh.n - 10;
+        if (sh.narrow >= 0 && inside && std::abs(i - j) > sh.narrow) continue;
         a.Add(i, j, u(rng) + (i == j ? 0.5 : 0.0));
+      }
     const linalg::BandedMatrix<double> original = a;
     std::vector<double> b(sh.n);
     for (double& v : b) v = u(rng);
@@ -318,4 +337,11 @@ BOOST_AUTO_TEST_CASE(BandedSubstitution_EqualsLapackDgbtrs) {
     BOOST_TEST(difference <= 1e-13 * scale);
     BOOST_TEST(residual <= 1e-12 * scale);
   }
+  // A zero column makes the band singular: no factors.
+  linalg::BandedMatrix<double> singular(6, 2, 2);
+  for (int i = 0; i < 6; ++i)
+    for (int j = std::max(0, i - 2); j <= std::min(5, i + 2); ++j)
+      if (j != 3) singular.Add(i, j, u(rng) + (i == j ? 0.5 : 0.0));
+  variational::BandedLu<double> lu;
+  BOOST_TEST(!lu.Factor(singular));
 }

@@ -172,6 +172,19 @@ class ReducedSystem : public SystemBase<P, Real> {
         const Eigen::Matrix<Real, d, d> block =
             cb.wx * row.template leftCols<d>() +
             cb.wv * row.template rightCols<d>();
+        // A banded matrix takes the block whole inside its band: entry by
+        // entry, each checked, the assembly took a fifth longer (0.28
+        // against 0.23 µs per node, Kepler e = 0.9, SBP84 under error
+        // control, bench/march_phases_bench). The band's edges, and any
+        // other sink, entry by entry with zeros skipped (the band was
+        // probed on the nonzero pattern).
+        if constexpr (requires {
+                        sink.template AddBlockInBand<d>(0, 0, block);
+                      }) {
+          if (sink.template AddBlockInBand<d>(NodeRow(ra.node, 0),
+                                              X(cb.node, 0), block))
+            continue;
+        }
         for (int r = 0; r < d; ++r)
           for (int s = 0; s < d; ++s)
             if (block(r, s) != Real(0))

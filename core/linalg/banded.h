@@ -46,6 +46,20 @@ class BandedMatrix {
       OutsideBand(i, j);
     data_[Index(i, j)] += v;
   }
+  // A(i0 + r, j0 + s) += block(r, s) for r, s < k when the k × k block lies
+  // inside the band (one check for the block; a column's k entries are
+  // adjacent in the storage); false, adding nothing, when it does not.
+  template <int k, class Block>
+  bool AddBlockInBand(int i0, int j0, const Block& block) {
+    if (i0 < 0 || j0 < 0 || i0 + k > n_ || j0 + k > n_ ||
+        i0 - j0 - (k - 1) < -ku_ || i0 + (k - 1) - j0 > kl_)
+      return false;
+    for (int s = 0; s < k; ++s) {
+      Real* column = &data_[Index(i0, j0 + s)];
+      for (int r = 0; r < k; ++r) column[r] += block(r, s);
+    }
+    return true;
+  }
   Real operator()(int i, int j) const {
     if (i - j > kl_ || j - i > ku_) return Real(0);
     return data_[Index(i, j)];

@@ -112,6 +112,7 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   out.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
+  if (options.phase_timings) out.phases.total = out.seconds;
   out.status.iterations = out.iterations;
   out.status.seconds = out.seconds;
   if (out.status.converged)

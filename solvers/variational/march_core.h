@@ -48,6 +48,7 @@ class MarchCore {
     Attempt a = solver_.Solve(state, t0, points, dt, fresh, WantNodes(),
                               predictor, uniform);
     out_.predictor_steps += a.predictor_steps;
+    out_.phases += a.phases;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
     if (!fresh && a.failure == WindowFailure::kNewton &&
         solver_.ReusesFactorizations()) {

@@ -27,6 +27,32 @@ struct WindowSample {
 };
 using WindowObserver = std::function<void(const WindowSample &)>;
 
+// Where a march's time goes (MarchOptions::phase_timings), in seconds over
+// all windows, rejected and failed ones included.
+struct MarchPhases {
+  double predictor = 0;  // the windows' starting paths (predictor.h)
+  double setup = 0;      // operators rebuilt for a new step (window_engine.h)
+  // Newton's phases (newton.h): matrix-free residuals, Jacobian assembly
+  // (the band probe included), factorizations, triangular solves.
+  double residual = 0, assembly = 0, factorization = 0, solve = 0;
+  double end = 0;     // after Newton: ω at the ends, the corrected end state,
+                      // the estimates and the nodes' velocities
+  double checks = 0;  // the a-posteriori checks (window_checks.h)
+  double total = 0;   // the whole march; total − the rest is the step
+                      // control, acceptance, node copies and allocation
+  MarchPhases &operator+=(const MarchPhases &o) {
+    predictor += o.predictor;
+    setup += o.setup;
+    residual += o.residual;
+    assembly += o.assembly;
+    factorization += o.factorization;
+    solve += o.solve;
+    end += o.end;
+    checks += o.checks;
+    return *this;
+  }
+};
+
 struct MarchOptions {
   // Default by measurement (bench/march_bench, SBP42, Nt = 2^18, points per
   // second): damped oscillator W = 16/32/48/64/128: 7.7/9.7/10.9/11.1/7.2 e6;
@@ -70,6 +96,10 @@ struct MarchOptions {
   // one: where a march can be stopped and resumed.
   long long start_node = 0;
   std::function<void(long long node, const InitialData &state)> at_boundary;
+  // Time the phases of every window (MarchResult::phases). Off by default:
+  // a window of SBP84 is solved in tens of microseconds, and the clock reads
+  // cost a few per cent of it.
+  bool phase_timings = false;
 };
 
 struct WindowReport {
@@ -109,6 +139,7 @@ struct MarchResult {
   double failed_at = std::numeric_limits<double>::quiet_NaN();
   long predictor_steps = 0;  // Dormand–Prince steps of the window starts
   double seconds = 0;
+  MarchPhases phases;  // with MarchOptions::phase_timings, else zeros
 };
 
 // Called with (t, x, v) of every node, in order, each node once.

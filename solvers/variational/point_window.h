@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -103,10 +104,15 @@ class PointWindow {
                        const std::vector<double>& px,
                        const std::vector<double>& pv, bool fresh, bool nodes) {
     const int n = a.points;
+    const auto setting = std::chrono::steady_clock::now();
     WindowEngine<P>& e = Engine(n, a.dt);
+    if (options_.phase_timings)
+      a.phases.setup += std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - setting)
+                            .count();
     last_engine_ = &e;
     variational::NewtonOptions newton = options_.solve.newton;
-    newton.phase_timings = false;
+    newton.phase_timings = options_.phase_timings;
     newton.final_residual = false;
     // A march hands each window's round-off to the next, and an
     // oscillation amplifies it: with the global solve's stop at 32 ε an
@@ -121,6 +127,11 @@ class PointWindow {
         e.Solve(x0, v0, px.data(), lambda3.data(), newton, fresh, nodes);
     a.iterations = o.report.iterations;
     a.corrections = o.report.corrections;
+    a.phases.residual += o.report.phases.residual;
+    a.phases.assembly += o.report.phases.assembly;
+    a.phases.factorization += o.report.phases.factorization;
+    a.phases.solve += o.report.phases.solve;
+    a.phases.end += o.seconds_end;
     if (!o.failure.empty()) {
       a.residual = o.report.last_residual;
       Failed(a,

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "solvers/variational/ivp_types.h"
+#include "solvers/variational/march_types.h"
 #include "solvers/variational/predictor.h"
 
 namespace vivp::variational::detail {
@@ -85,6 +86,7 @@ struct WindowAttempt {
   double distance = 0;   // worst |H − P| / allowed of check 2
   double deviation = 0;  // max over nodes of |x_i − P(t_i)|
   long predictor_steps = 0;
+  MarchPhases phases;  // this attempt's (MarchOptions::phase_timings)
   bool ok() const { return failure == WindowFailure::kNone; }
   bool split_helps() const {
     return failure == WindowFailure::kNewton ||

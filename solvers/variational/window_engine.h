@@ -14,6 +14,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -83,6 +84,7 @@ class WindowEngine {
     // round-off dominates, est_v stayed below 0.5 of it, SBP42–84, Kepler
     // e = 0.9 and the anharmonic oscillator).
     State roundoff_v{};
+    double seconds_end = 0;   // after Newton (newton.phase_timings)
     std::string failure;      // empty on success
     bool split_helps = true;  // false: a shorter window has the same Δt
   };
@@ -112,6 +114,13 @@ class WindowEngine {
       o.failure = o.report.reason;
       return o;
     }
+    const auto ending = std::chrono::steady_clock::now();
+    const auto timed = [&] {
+      if (newton.phase_timings)
+        o.seconds_end = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - ending)
+                            .count();
+    };
     for (int c = 0; c < d; ++c) {
       xc_[c].resize(n);
       for (int i = 0; i < n; ++i) xc_[c][i] = y_[system_.X(i, c)];
@@ -143,6 +152,7 @@ class WindowEngine {
         omega_end_ = -1.0;
         o.failure = std::move(why);
         o.split_helps = false;
+        timed();
         return o;
       }
     }
@@ -178,6 +188,7 @@ class WindowEngine {
         D.Apply(std::span<const double>(xc_[c]), std::span<double>(v_[c]));
       }
     }
+    timed();
     return o;
   }
 

@@ -1,0 +1,173 @@
+// Where a point-mechanics march spends its time, per node: the predictor,
+// the operators rebuilt for a new step, Newton's residuals, assemblies,
+// factorizations and solves, the end state and estimates, the a-posteriori
+// checks, and the rest (step control, acceptance, allocation). Each row
+// under error control is followed by a uniform march of the same operator
+// over the same span with the same number of nodes: the price of the
+// adaptive machinery per node is their ratio.
+//
+// Usage: march_phases_bench [--repeats R] [--window W] [PROBLEM T_END OP TOL
+// ...]
+// Default rows: Kepler e = 0.9 over 3 orbits and the anharmonic oscillator
+// to t = 10, SBP42/63/84, tolerances 1e-5 … 1e-8 (the comparison of
+// `vivp bench`), in windows of W points (default: MarchOptions'). Times are
+// the median of R runs (default 5); the phases come from the run with the
+// median total.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "studies/registry.h"
+
+using namespace vivp;
+using namespace vivp::variational;
+
+namespace {
+
+struct Row {
+  std::string problem;
+  double t_end;
+  std::string op;
+  double tol;
+};
+
+struct Run {
+  MarchResult result;
+  double seconds = 0;
+};
+
+// The run with the median total of `repeats`.
+template <class F>
+Run Median(F&& march, int repeats) {
+  std::vector<Run> runs;
+  for (int r = 0; r < repeats; ++r) {
+    Run run;
+    run.result = march();
+    run.seconds = run.result.phases.total;
+    runs.push_back(std::move(run));
+  }
+  std::sort(runs.begin(), runs.end(),
+            [](const Run& a, const Run& b) { return a.seconds < b.seconds; });
+  return std::move(runs[runs.size() / 2]);
+}
+
+// The end state's error: the largest over components of the handed-off
+// position's and velocity's distance from the exact (or reference) state.
+double EndError(const studies::NamedProblem& problem, double t_end,
+                const MarchResult& m) {
+  const studies::ExactState e = problem.exact(t_end);
+  double err = 0;
+  for (std::size_t c = 0; c < e.x.size(); ++c)
+    err = std::max({err, std::abs(m.end_position[c] - e.x[c]),
+                    std::abs(m.end_velocity[c] - e.v[c])});
+  return err;
+}
+
+void Print(const char* kind, double tol, const Run& run, double error) {
+  const MarchResult& m = run.result;
+  const MarchPhases& p = m.phases;
+  const double nodes = double(std::max<long long>(m.points, 1));
+  const double us = 1e6 / nodes;
+  const double other =
+      p.total - (p.predictor + p.setup + p.residual + p.assembly +
+                 p.factorization + p.solve + p.end + p.checks);
+  if (!m.status.converged) {
+    std::printf("| %-8s | %7.0e | not converged: %s |\n", kind, tol,
+                m.status.reason.c_str());
+    return;
+  }
+  std::printf(
+      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %6.3f | %5.3f | "
+      "%5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f |\n",
+      kind, tol, error, m.points, m.window_count, m.rejected,
+      double(m.corrections) / double(std::max<long long>(m.window_count, 1)),
+      p.total * us, p.predictor * us, p.setup * us, p.residual * us,
+      p.assembly * us, p.factorization * us, p.solve * us, p.end * us,
+      p.checks * us, other * us);
+}
+
+void Measure(const Row& row, int repeats, long long window) {
+  const studies::NamedProblem& problem = studies::FindProblem(row.problem);
+  Grid grid{.op = row.op, .t_start = 0.0, .t_end = row.t_end};
+  MarchOptions o;
+  o.window_points = window;
+  o.phase_timings = true;
+  o.tolerance = {row.tol, row.tol};
+  const Run adaptive =
+      Median([&] { return problem.march(grid, o, {}); }, repeats);
+  std::printf("| %s, t = %.4g, %s ||||||||||||||||\n", row.problem.c_str(),
+              row.t_end, row.op.c_str());
+  Print("adaptive", row.tol, adaptive,
+        adaptive.result.status.converged
+            ? EndError(problem, row.t_end, adaptive.result)
+            : NAN);
+  if (!adaptive.result.status.converged) return;
+  // The same nodes on a uniform grid: no predictor tolerance to meet, no
+  // rejections, one step.
+  MarchOptions u;
+  u.window_points = window;
+  u.phase_timings = true;
+  u.stabilize = false;
+  grid.points = adaptive.result.points;
+  const Run uniform =
+      Median([&] { return problem.march(grid, u, {}); }, repeats);
+  Print("uniform", row.tol, uniform,
+        uniform.result.status.converged
+            ? EndError(problem, row.t_end, uniform.result)
+            : NAN);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repeats = 5;
+  long long window = MarchOptions{}.window_points;
+  std::vector<Row> rows;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--repeats" && i + 1 < args.size()) {
+      repeats = std::max(1, std::atoi(args[++i].c_str()));
+    } else if (args[i] == "--window" && i + 1 < args.size()) {
+      window = std::atoll(args[++i].c_str());
+    } else if (i + 3 < args.size()) {
+      rows.push_back({args[i], std::atof(args[i + 1].c_str()), args[i + 2],
+                      std::atof(args[i + 3].c_str())});
+      i += 3;
+    } else {
+      std::fprintf(stderr,
+                   "usage: march_phases_bench [--repeats R] [--window W] "
+                   "[PROBLEM T_END OP TOL ...]\n");
+      return 2;
+    }
+  }
+  if (rows.empty())
+    for (const auto& [problem, t_end] :
+         {std::pair<std::string, double>{"kepler_e09", 6 * M_PI},
+          {"anharmonic", 10.0}})
+      for (const char* op : {"sbp42", "sbp63", "sbp84"})
+        for (double tol : {1e-5, 1e-6, 1e-7, 1e-8})
+          rows.push_back({problem, t_end, op, tol});
+  std::printf(
+      "Per node, µs (median of %d runs, windows of %lld points): a march "
+      "under error control at the tolerance, then a uniform march with the "
+      "same nodes. corr/w: Newton corrections per window; other: step "
+      "control, acceptance, allocation.\n\n",
+      repeats, window);
+  std::printf(
+      "| march | tol | end error | nodes | windows | rej | corr/w | total | "
+      "predictor | "
+      "setup | residual | assembly | factor | solve | end | checks | other "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+      "\n");
+  for (const Row& row : rows) {
+    try {
+      Measure(row, repeats, window);
+    } catch (const std::exception& e) {
+      std::printf("| %s: %s |\n", row.problem.c_str(), e.what());
+    }
+  }
+  return 0;
+}
