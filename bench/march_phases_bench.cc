@@ -80,10 +80,11 @@ void Print(const char* kind, double tol, const Run& run, double error) {
     return;
   }
   std::printf(
-      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %6.3f | %5.3f | "
+      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %4.2f | %6.3f | %5.3f | "
       "%5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f |\n",
       kind, tol, error, m.points, m.window_count, m.rejected,
       double(m.corrections) / double(std::max<long long>(m.window_count, 1)),
+      double(m.iterations) / double(std::max<long long>(m.window_count, 1)),
       p.total * us, p.predictor * us, p.setup * us, p.residual * us,
       p.assembly * us, p.factorization * us, p.solve * us, p.end * us,
       p.checks * us, other * us);
@@ -98,7 +99,7 @@ void Measure(const Row& row, int repeats, long long window) {
   o.tolerance = {row.tol, row.tol};
   const Run adaptive =
       Median([&] { return problem.march(grid, o, {}); }, repeats);
-  std::printf("| %s, t = %.4g, %s ||||||||||||||||\n", row.problem.c_str(),
+  std::printf("| %s, t = %.4g, %s |||||||||||||||||\n", row.problem.c_str(),
               row.t_end, row.op.c_str());
   Print("adaptive", row.tol, adaptive,
         adaptive.result.status.converged
@@ -153,14 +154,16 @@ int main(int argc, char** argv) {
   std::printf(
       "Per node, µs (median of %d runs, windows of %lld points): a march "
       "under error control at the tolerance, then a uniform march with the "
-      "same nodes. corr/w: Newton corrections per window; other: step "
+      "same nodes. corr/w, fact/w: Newton corrections and Jacobian "
+      "factorizations per accepted window; other: step "
       "control, acceptance, allocation.\n\n",
       repeats, window);
   std::printf(
-      "| march | tol | end error | nodes | windows | rej | corr/w | total | "
+      "| march | tol | end error | nodes | windows | rej | corr/w | fact/w | "
+      "total | "
       "predictor | "
       "setup | residual | assembly | factor | solve | end | checks | other "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
       "\n");
   for (const Row& row : rows) {
     try {
