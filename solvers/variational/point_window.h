@@ -42,7 +42,13 @@ class PointWindow {
   int dim() const { return d; }
   int order() const { return order_; }
   const std::string& op() const { return op_; }
+  // At the state the last window handed off, the ω its engine took there
+  // (one pointwise Hessian and eigenproblem per window instead of two).
   double FastestFrequency(const double* x, const double* v) const {
+    if (last_engine_)
+      if (const double omega = last_engine_->HandedFrequency(x, v);
+          omega >= 0.0)
+        return omega;
     return variational::FastestFrequency(problem_, x, v);
   }
 
@@ -104,12 +110,13 @@ class PointWindow {
                        const std::vector<double>& px,
                        const std::vector<double>& pv, bool fresh, bool nodes) {
     const int n = a.points;
-    const auto setting = std::chrono::steady_clock::now();
+    using Clock = std::chrono::steady_clock;
+    const auto setting =
+        options_.phase_timings ? Clock::now() : Clock::time_point{};
     WindowEngine<P>& e = Engine(n, a.dt);
     if (options_.phase_timings)
-      a.phases.setup += std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - setting)
-                            .count();
+      a.phases.setup +=
+          std::chrono::duration<double>(Clock::now() - setting).count();
     last_engine_ = &e;
     variational::NewtonOptions newton = options_.solve.newton;
     newton.phase_timings = options_.phase_timings;

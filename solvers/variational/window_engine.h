@@ -194,6 +194,17 @@ class WindowEngine {
 
   long long factorizations() const { return cache_.factorizations; }
 
+  // ω at (x, v) when that is this engine's last hand-off state: the one it
+  // evaluated at the window's end (the same time; the state differs by the
+  // multiplier correction, the size of the error estimate); −1 otherwise.
+  double HandedFrequency(const double* x, const double* v) const {
+    if (omega_end_ < 0.0) return -1.0;
+    for (int c = 0; c < d; ++c)
+      if (x[c] != handed_x_[c] || (order() == 2 && v[c] != handed_v_[c]))
+        return -1.0;
+    return omega_end_;
+  }
+
   // ‖F‖∞ of the window's equations at the last solve's result: the residual
   // a rejected window reports (marching does not evaluate it otherwise).
   double LastResidual() const {
