@@ -52,17 +52,9 @@ BOOST_AUTO_TEST_CASE(the_radial_bogomolny_vortex_has_energy_2_pi_v2_n) {
 // Under AddressSanitizer the 192² relaxation takes 7 of the test's 8
 // minutes; 48² and 96² walk the same code paths (memory errors do not
 // depend on the grid), so the sanitizer build fits the order on those two
-// and the Release build also checks the bound at h = 0.125.
-// GCC defines __SANITIZE_ADDRESS__; clang 14 only answers
-// __has_feature(address_sanitizer).
-#if defined(__SANITIZE_ADDRESS__)
-#define VIVP_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define VIVP_UNDER_ASAN 1
-#endif
-#endif
-#if defined(VIVP_UNDER_ASAN)
+// and the Release build also checks the bound at h = 0.125 (VIVP_SANITIZED,
+// tests/CMakeLists.txt).
+#if defined(VIVP_SANITIZED)
 constexpr bool kFinest = false;
 #else
 constexpr bool kFinest = true;

@@ -75,7 +75,7 @@ class BandedLu {
         std::swap(b0[l], b0[j]);
         std::swap(b1[l], b1[j]);
       }
-      const int lm = std::min(kl, extent_[j]);
+      const int lm = extent_[j];
       const double* m = ab + std::size_t(j) * ld + kd + 1;
       const double c0 = b0[j], c1 = b1[j];
       for (int i = 0; i < lm; ++i) {

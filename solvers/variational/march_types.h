@@ -32,8 +32,9 @@ using WindowObserver = std::function<void(const WindowSample &)>;
 struct MarchPhases {
   double predictor = 0;  // the windows' starting paths (predictor.h)
   double setup = 0;      // operators rebuilt for a new step (window_engine.h)
-  // Newton's phases (newton.h): matrix-free residuals, Jacobian assembly
-  // (the band probe included), factorizations, triangular solves.
+  // Newton's phases (newton.h): matrix-free residuals, Jacobian assembly,
+  // factorizations, triangular solves (the band probe, once per window
+  // size, falls under "other").
   double residual = 0, assembly = 0, factorization = 0, solve = 0;
   double end = 0;     // after Newton: ω at the ends, the corrected end state,
                       // the estimates and the nodes' velocities

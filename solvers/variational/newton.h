@@ -107,6 +107,20 @@ inline double Since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace detail
 
+// A clock for optional phase timings (NewtonOptions::phase_timings,
+// MarchOptions::phase_timings): when off, it reads nothing and every
+// duration is 0.
+struct PhaseClock {
+  using Clock = std::chrono::steady_clock;
+  bool on;
+  Clock::time_point Now() const {
+    return on ? Clock::now() : Clock::time_point{};
+  }
+  double Since(Clock::time_point t0) const {
+    return on ? detail::Since(t0) : 0.0;
+  }
+};
+
 // The linear solver of Newton's method, a concept:
 //
 //   bool valid;                   holds a factorization to start from
@@ -192,16 +206,7 @@ NewtonReport Newton(
     const std::function<void(const Real*, Real*)>& residual_override = {}) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  // Per-phase clock, a no-op unless options.phase_timings.
-  struct {
-    bool on;
-    Clock::time_point Now() const {
-      return on ? Clock::now() : Clock::time_point{};
-    }
-    double Since(Clock::time_point t0) const {
-      return on ? detail::Since(t0) : 0.0;
-    }
-  } clock{options.phase_timings};
+  const PhaseClock clock{options.phase_timings};
   NewtonReport report;
   const int n = system.size();
   const Real eps = std::numeric_limits<Real>::epsilon();

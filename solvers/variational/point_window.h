@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -110,13 +109,10 @@ class PointWindow {
                        const std::vector<double>& px,
                        const std::vector<double>& pv, bool fresh, bool nodes) {
     const int n = a.points;
-    using Clock = std::chrono::steady_clock;
-    const auto setting =
-        options_.phase_timings ? Clock::now() : Clock::time_point{};
+    const PhaseClock clock{options_.phase_timings};
+    const auto setting = clock.Now();
     WindowEngine<P>& e = Engine(n, a.dt);
-    if (options_.phase_timings)
-      a.phases.setup +=
-          std::chrono::duration<double>(Clock::now() - setting).count();
+    a.phases.setup += clock.Since(setting);
     last_engine_ = &e;
     variational::NewtonOptions newton = options_.solve.newton;
     newton.phase_timings = options_.phase_timings;

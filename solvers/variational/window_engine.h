@@ -14,7 +14,6 @@
 #pragma once
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -114,13 +113,9 @@ class WindowEngine {
       o.failure = o.report.reason;
       return o;
     }
-    const auto ending = std::chrono::steady_clock::now();
-    const auto timed = [&] {
-      if (newton.phase_timings)
-        o.seconds_end = std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - ending)
-                            .count();
-    };
+    const PhaseClock clock{newton.phase_timings};
+    const auto ending = clock.Now();
+    const auto timed = [&] { o.seconds_end = clock.Since(ending); };
     for (int c = 0; c < d; ++c) {
       xc_[c].resize(n);
       for (int i = 0; i < n; ++i) xc_[c][i] = y_[system_.X(i, c)];

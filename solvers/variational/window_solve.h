@@ -20,7 +20,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -80,7 +79,8 @@ class WindowSolver {
       predictor_tol.absolute = std::max(predictor_tol.absolute * size, 1e-300);
     }
     PredictorReport pr;
-    const auto predicting = Now();
+    const PhaseClock clock{options_.phase_timings};
+    const auto predicting = clock.Now();
     for (int tries = 0;; ++tries) {
       pr = window_.Predict(t0, x0_.data(), v0_.data(), tau_.data(), points,
                            predictor_tol.absolute, predictor_tol.relative,
@@ -94,12 +94,12 @@ class WindowSolver {
       predictor_tol.absolute *= 1e-2;
       predictor_tol.relative *= 1e-2;
     }
-    a.phases.predictor += Since(predicting);
+    a.phases.predictor += clock.Since(predicting);
     if (!pr.ok) return Failed(a, WindowFailure::kPredictor, pr.failure);
     const double* pend_x = &px_[std::size_t(points - 1) * d];
     const double* pend_v = &pv_[std::size_t(points - 1) * d];
     if (!window_.Solve(a, t0, initial, px_, pv_, fresh, nodes)) return a;
-    const auto checking = Now();
+    const auto checking = clock.Now();
     std::string why = CheckFinite(a, order);
     WindowFailure failure = WindowFailure::kNewton;
     if (why.empty()) {
@@ -112,7 +112,7 @@ class WindowSolver {
       why = CheckResolved(a, pr, pend_x, px_, options_.max_relative_deviation);
       failure = WindowFailure::kCoarse;
     }
-    a.phases.checks += Since(checking);
+    a.phases.checks += clock.Since(checking);
     if (why.empty()) return a;
     window_.RecordResidual(a);
     return Failed(a, failure, why);
@@ -122,17 +122,6 @@ class WindowSolver {
   long long factorizations() const { return window_.factorizations(); }
 
  private:
-  // The clock of MarchOptions::phase_timings: no reads when it is off.
-  using Clock = std::chrono::steady_clock;
-  Clock::time_point Now() const {
-    return options_.phase_timings ? Clock::now() : Clock::time_point{};
-  }
-  double Since(Clock::time_point t0) const {
-    return options_.phase_timings
-               ? std::chrono::duration<double>(Clock::now() - t0).count()
-               : 0.0;
-  }
-
   static Attempt& Failed(Attempt& a, WindowFailure f, std::string why) {
     a.failure = f;
     a.why = std::move(why);
