@@ -6,13 +6,15 @@
 // over the same span with the same number of nodes: the price of the
 // adaptive machinery per node is their ratio.
 //
-// Usage: march_phases_bench [--repeats R] [--window W] [PROBLEM T_END OP TOL
-// ...]
+// Usage: march_phases_bench [--repeats R] [--window W] [--trajectory]
+// [PROBLEM T_END OP TOL ...]
 // Default rows: Kepler e = 0.9 over 3 orbits and the anharmonic oscillator
 // to t = 10, SBP42/63/84, tolerances 1e-5 … 1e-8 (the comparison of
 // `vivp bench`), in windows of W points (default: MarchOptions'). Times are
 // the median of R runs (default 5); the phases come from the run with the
-// median total.
+// median total. The marches keep no trajectory (the solver's cost alone);
+// --trajectory keeps every node in both, as a caller that stores them does
+// (its allocations and page faults fall into "other").
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -80,8 +82,9 @@ void Print(const char* kind, double tol, const Run& run, double error) {
     return;
   }
   std::printf(
-      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %4.2f | %6.3f | %5.3f | "
-      "%5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f |\n",
+      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %4.2f | "
+      "%6.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | "
+      "%5.3f | %5.3f |\n",
       kind, tol, error, m.points, m.window_count, m.rejected,
       double(m.corrections) / double(std::max<long long>(m.window_count, 1)),
       double(m.iterations) / double(std::max<long long>(m.window_count, 1)),
@@ -90,12 +93,13 @@ void Print(const char* kind, double tol, const Run& run, double error) {
       p.checks * us, other * us);
 }
 
-void Measure(const Row& row, int repeats, long long window) {
+void Measure(const Row& row, int repeats, long long window, bool trajectory) {
   const studies::NamedProblem& problem = studies::FindProblem(row.problem);
   Grid grid{.op = row.op, .t_start = 0.0, .t_end = row.t_end};
   MarchOptions o;
   o.window_points = window;
   o.phase_timings = true;
+  o.keep_trajectory = trajectory;
   o.tolerance = {row.tol, row.tol};
   const Run adaptive =
       Median([&] { return problem.march(grid, o, {}); }, repeats);
@@ -111,6 +115,7 @@ void Measure(const Row& row, int repeats, long long window) {
   MarchOptions u;
   u.window_points = window;
   u.phase_timings = true;
+  u.keep_trajectory = trajectory;
   u.stabilize = false;
   grid.points = adaptive.result.points;
   const Run uniform =
@@ -126,6 +131,7 @@ void Measure(const Row& row, int repeats, long long window) {
 int main(int argc, char** argv) {
   int repeats = 5;
   long long window = MarchOptions{}.window_points;
+  bool trajectory = false;
   std::vector<Row> rows;
   std::vector<std::string> args(argv + 1, argv + argc);
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -133,6 +139,8 @@ int main(int argc, char** argv) {
       repeats = std::max(1, std::atoi(args[++i].c_str()));
     } else if (args[i] == "--window" && i + 1 < args.size()) {
       window = std::atoll(args[++i].c_str());
+    } else if (args[i] == "--trajectory") {
+      trajectory = true;
     } else if (i + 3 < args.size()) {
       rows.push_back({args[i], std::atof(args[i + 1].c_str()), args[i + 2],
                       std::atof(args[i + 3].c_str())});
@@ -140,7 +148,7 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: march_phases_bench [--repeats R] [--window W] "
-                   "[PROBLEM T_END OP TOL ...]\n");
+                   "[--trajectory] [PROBLEM T_END OP TOL ...]\n");
       return 2;
     }
   }
@@ -152,22 +160,23 @@ int main(int argc, char** argv) {
         for (double tol : {1e-5, 1e-6, 1e-7, 1e-8})
           rows.push_back({problem, t_end, op, tol});
   std::printf(
-      "Per node, µs (median of %d runs, windows of %lld points): a march "
+      "Per node, µs (median of %d runs, windows of %lld points, %s): a march "
       "under error control at the tolerance, then a uniform march with the "
       "same nodes. corr/w, fact/w: Newton corrections and Jacobian "
       "factorizations per accepted window; other: step "
       "control, acceptance, allocation.\n\n",
-      repeats, window);
+      repeats, window, trajectory ? "every node kept" : "no trajectory kept");
   std::printf(
       "| march | tol | end error | nodes | windows | rej | corr/w | fact/w | "
       "total | "
       "predictor | "
       "setup | residual | assembly | factor | solve | end | checks | other "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-      "\n");
+      "|\n"
+      "|---|---|---|---|---|---|---|---|---|"
+      "---|---|---|---|---|---|---|---|---|\n");
   for (const Row& row : rows) {
     try {
-      Measure(row, repeats, window);
+      Measure(row, repeats, window, trajectory);
     } catch (const std::exception& e) {
       std::printf("| %s: %s |\n", row.problem.c_str(), e.what());
     }

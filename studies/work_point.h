@@ -35,9 +35,11 @@ struct ExternalRun {
   std::string status = "ok";
 };
 // `knob`: the step count, or the tolerance for an adaptive method.
-using ExternalMethod = std::function<ExternalRun(const std::string& problem,
-                                                 const std::vector<double>& y0,
-                                                 double t_end, double knob)>;
+// `trajectory`: the states at every node (the observed run); otherwise the end
+// state alone (the timed runs, which charge a stepper no observer either).
+using ExternalMethod = std::function<ExternalRun(
+    const std::string& problem, const std::vector<double>& y0, double t_end,
+    double knob, bool trajectory)>;
 
 inline std::map<std::string, ExternalMethod>& ExternalMethods() {
   static std::map<std::string, ExternalMethod> methods;

@@ -109,8 +109,8 @@ WorkPoint Measure(const std::string& problem_name, const Problem& problem,
     }
     // `adaptive` by value: the run is called after this block ends.
     run = [&, adaptive](bool with_observer) {
-      const ExternalRun r =
-          ExternalMethods().at(method)(problem_name, y0, t_end, knob);
+      const ExternalRun r = ExternalMethods().at(method)(
+          problem_name, y0, t_end, knob, with_observer);
       w.evaluations = r.evaluations;
       w.iterations = r.iterations;
       w.status = r.status;
