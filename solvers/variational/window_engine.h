@@ -136,10 +136,9 @@ class WindowEngine {
       // size of the error estimate). Only the first window, and a window
       // after a fallback, evaluates it: one pointwise Hessian per window
       // instead of two.
-      const bool continues =
-          omega_end_ >= 0.0 && x0 == handed_x_ && v0 == handed_v_;
+      const double handed = HandedFrequency(x0.data(), v0.data());
       const double omega_start =
-          continues ? omega_end_ : FastestFrequency(problem_, xe[0], ve[0]);
+          handed >= 0.0 ? handed : FastestFrequency(problem_, xe[0], ve[0]);
       omega_end = FastestFrequency(problem_, xe[1], ve[1]);
       const Grid grid{.op = op_, .points = n, .t_end = D.t_end()};
       std::string why = UnderResolution(grid, omega_start, omega_end);
