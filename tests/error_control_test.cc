@@ -94,11 +94,19 @@ BOOST_DATA_TEST_CASE(ToleranceSweep_AchievedErrorTracksTheTolerance,
   // Tolerances 1e-3 … 1e-8. What the tolerance bounds is the local error of
   // every returned node, and the velocity of a window's last nodes (the SBP
   // closure) is the binding one: the largest node velocity error follows
-  // the tolerance with a fitted slope of 1.04–1.45 and stays within 40
-  // times it (measured: at most 36, Kepler SBP42 at 1e-3, where the error
-  // accumulated over ten orbits at pericentre speed 4.4 dominates). Positions
-  // and the handed-off end state are more accurate still: the end position
-  // error stays below twice the tolerance (measured ratios 8e-8 … 1.6).
+  // the tolerance with a fitted slope of 1.1–1.5 and stays within 40 times
+  // it. Positions and the handed-off end state are more accurate still: the
+  // end position error stays below twice the tolerance.
+  //
+  // Except Kepler at 1e-3, where the error accumulated over ten orbits at
+  // pericentre speed 4.4 dominates, and is as sensitive to the step sequence
+  // as an orbit's phase is: perturbations of the window solves at the level
+  // of round-off (the factorization kept as a chord start within a step
+  // ratio of 1, 1.25, 1.5, 2, 3, 4, 6 or any; every solve within 4e-15 of a
+  // fresh Newton's) gave 11,469–11,751 nodes and, for SBP42, end position
+  // errors of 1.06–2.69 and largest velocity errors of 24–62 times the
+  // tolerance. There the bounds are 4 and 80; from 1e-4 on, over all six
+  // marches, the same perturbations moved no ratio past 0.37 and 10.
   const double t_end = std::string(problem) == "kepler_e09" ? kTenOrbits : 10;
   const std::vector<double> tolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
   const vivp::studies::ConvergenceStudy s = RunToleranceStudy(
@@ -109,8 +117,10 @@ BOOST_DATA_TEST_CASE(ToleranceSweep_AchievedErrorTracksTheTolerance,
                                << r.points << " nodes, end error "
                                << r.err_x_corrected << ", node errors x "
                                << r.max_error << ", v " << r.max_error_v);
-    BOOST_TEST(r.err_x_corrected <= 2 * r.tolerance);
-    BOOST_TEST(r.max_error_v <= 40 * r.tolerance);
+    const bool global =
+        std::string(problem) == "kepler_e09" && r.tolerance >= 1e-3;
+    BOOST_TEST(r.err_x_corrected <= (global ? 4 : 2) * r.tolerance);
+    BOOST_TEST(r.max_error_v <= (global ? 80 : 40) * r.tolerance);
   }
   BOOST_TEST_MESSAGE(problem << " " << op << ": velocity tracking slope "
                              << s.tracking_max_v.slope << ", ratio "

@@ -25,6 +25,7 @@
 #include "core/action/density.h"
 #include "core/action/gradient_sweep.h"
 #include "core/action/local_map.h"
+#include "core/action/mass_band.h"
 #include "core/action/system_base.h"
 #include "core/linalg/banded.h"
 #include "core/sbp/regularized.h"
@@ -131,15 +132,32 @@ class ReducedSystem : public SystemBase<P, Real> {
     auto& derivatives = scratch_.derivatives;
     points.resize(2 * d * kBlock);
     derivatives.resize(kBlock);
+    // A whole assembly of a constant-mass density takes its vv blocks from
+    // K = D̄ᵀHD̄ (mass_band.h), with M the first node's vv block; a node whose
+    // vv block differs adds the difference itself. After one assembly with
+    // such a node the system stops trying (a varying mass would pay for K
+    // on top of every block).
+    const bool kron = mass_constant_ && node_begin == 0 && node_end == n_ &&
+                      scratch_.mass_band.Prepare(dbar_);
+    Block mass = Block::Zero();
+    bool same_mass = true;
     for (int begin = node_begin; begin < node_end; begin += kBlock) {
       const int end = std::min(node_end, begin + kBlock);
       for (int i = begin; i < end; ++i)
         NodePoint(x, v, i, &points[2 * d * (i - begin)]);
       DiagonalDerivativesAt<Real>(problem_, points.data(), end - begin,
                                   derivatives.data());
+      if (kron && begin == 0)
+        mass = derivatives[0].dmp.template bottomRightCorner<d, d>();
       for (int i = begin; i < end; ++i)
-        AddNodeJacobian(i, derivatives[i - begin].dmp, sink);
+        same_mass &= AddNodeJacobian(i, derivatives[i - begin].dmp,
+                                     kron ? &mass : nullptr, sink);
     }
+    // (A first-order density is linear in v: M = 0 and K adds nothing.)
+    if (kron && (mass.array() != Real(0)).any())
+      for (const auto& [a, b, k] : scratch_.mass_band.Entries())
+        AddBlock(a, b, Block(dbar_.base().inv_dt() * k * mass), sink);
+    if (kron) mass_constant_ = same_mass;
     for (int c = 0; c < d; ++c) {
       sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
       sink.Add(c, X(0, c), Real(1));
@@ -153,44 +171,66 @@ class ReducedSystem : public SystemBase<P, Real> {
   }
 
  private:
+  using Block = Eigen::Matrix<Real, d, d>;
+
   // Node i's terms: rows (x₋, v₋) of node i, columns (x₊, v₊), both mapped
   // to path values through the same local map (v± = D̄x±, linear part);
-  // dmp is the density's mixed block there.
+  // dmp is the density's mixed block there. With `mass` given, the vv
+  // block's part M is left to the caller (K ⊗ M) and the node adds its vv
+  // block minus M. When that is zero — true is returned — the block (a, b)
+  // is wx_a wx_b A_xx + wx_a wv_b A_xv + wv_a wx_b A_vx, nonzero only where
+  // a or b is node i itself (wx = 1 there, 0 elsewhere), and only at (i, i)
+  // when A_xv and A_vx vanish too (a separable density): one block instead
+  // of (1 + the row's width)².
   template <class Sink>
-  void AddNodeJacobian(int i, const Eigen::Matrix<Real, 2 * d, 2 * d>& dmp,
-                       Sink& sink) const {
-    const Eigen::Matrix<Real, 2 * d, 2 * d> a =
-        dbar_.base().NormWeight(i) * dmp;
+  bool AddNodeJacobian(int i, const Eigen::Matrix<Real, 2 * d, 2 * d>& dmp,
+                       const Block* mass, Sink& sink) const {
+    Eigen::Matrix<Real, 2 * d, 2 * d> a = dbar_.base().NormWeight(i) * dmp;
+    bool same = false, xv_zero = false, vx_zero = false;
+    if (mass) {
+      const Block rest = dmp.template bottomRightCorner<d, d>() - *mass;
+      same = (rest.array() == Real(0)).all();
+      a.template bottomRightCorner<d, d>() = dbar_.base().NormWeight(i) * rest;
+      xv_zero = (a.template topRightCorner<d, d>().array() == Real(0)).all();
+      vx_zero = (a.template bottomLeftCorner<d, d>().array() == Real(0)).all();
+    }
     const LocalMap<Real> map = MakeLocalMap(dbar_, i);
     for (int ea = 0; ea < map.size; ++ea) {
       const auto& ra = map.entries[ea];
+      if (same && ra.wx == Real(0) && vx_zero) continue;  // a zero row
       // Row entry a's weights applied once: (wx_a, wv_a)·A, d × 2d.
       const Eigen::Matrix<Real, d, 2 * d> row =
           ra.wx * a.template topRows<d>() + ra.wv * a.template bottomRows<d>();
       for (int eb = 0; eb < map.size; ++eb) {
         const auto& cb = map.entries[eb];
-        const Eigen::Matrix<Real, d, d> block =
-            cb.wx * row.template leftCols<d>() +
-            cb.wv * row.template rightCols<d>();
-        // A banded matrix takes the block whole inside its band: entry by
-        // entry, each checked, the assembly took a fifth longer (0.28
-        // against 0.23 µs per node, Kepler e = 0.9, SBP84 under error
-        // control, bench/march_phases_bench). The band's edges, and any
-        // other sink, entry by entry with zeros skipped (the band was
-        // probed on the nonzero pattern).
-        if constexpr (requires {
-                        sink.template AddBlockInBand<d>(0, 0, block);
-                      }) {
-          if (sink.template AddBlockInBand<d>(NodeRow(ra.node, 0),
-                                              X(cb.node, 0), block))
-            continue;
-        }
-        for (int r = 0; r < d; ++r)
-          for (int s = 0; s < d; ++s)
-            if (block(r, s) != Real(0))
-              sink.Add(NodeRow(ra.node, r), X(cb.node, s), block(r, s));
+        if (same && cb.wx == Real(0) && (ra.wx == Real(0) || xv_zero))
+          continue;  // a zero block
+        AddBlock(ra.node, cb.node,
+                 Block(cb.wx * row.template leftCols<d>() +
+                       cb.wv * row.template rightCols<d>()),
+                 sink);
       }
     }
+    return same;
+  }
+
+  // The block of node row a and node column b.
+  template <class Sink>
+  void AddBlock(int a, int b, const Block& block, Sink& sink) const {
+    // A banded matrix takes the block whole inside its band: entry by
+    // entry, each checked, the assembly took a fifth longer (0.28 against
+    // 0.23 µs per node, Kepler e = 0.9, SBP84 under error control,
+    // bench/march_phases_bench). The band's edges, and any other sink,
+    // entry by entry with zeros skipped (the band was probed on the
+    // nonzero pattern).
+    if constexpr (requires { sink.template AddBlockInBand<d>(0, 0, block); }) {
+      if (sink.template AddBlockInBand<d>(NodeRow(a, 0), X(b, 0), block))
+        return;
+    }
+    for (int r = 0; r < d; ++r)
+      for (int s = 0; s < d; ++s)
+        if (block(r, s) != Real(0))
+          sink.Add(NodeRow(a, r), X(b, s), block(r, s));
   }
 
   // Nodes per call of the pointwise derivatives: one call (a virtual one
@@ -206,8 +246,11 @@ class ReducedSystem : public SystemBase<P, Real> {
     std::vector<Real> x[d], v[d], w[d], dtw;
     std::vector<Real> points;  // 2d per node
     std::vector<Diagonal<Real, d>> derivatives;
+    MassBand<Real> mass_band;
   };
   mutable Scratch scratch_;
+  // Whether the last whole assembly found one vv block at every node.
+  mutable bool mass_constant_ = true;
 };
 
 }  // namespace vivp::action

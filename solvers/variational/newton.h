@@ -191,10 +191,6 @@ struct BandedSolver {
   void Solve(Real* b) const { lu.Solve(b); }
 };
 
-// Kept under its old name for the marches that hold one.
-template <class Real>
-using FactorCache = BandedSolver<Real>;
-
 // `residual_override`, when given, replaces system.Residual for every
 // residual evaluation (e.g. the same residual evaluated in long double: mixed
 // precision iterative refinement). `solver` supplies a factorization to start

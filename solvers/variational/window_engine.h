@@ -5,12 +5,12 @@
 // The Lagrangian does not depend on t, so every window of the same length has
 // the same discrete equations up to the initial data. A linear problem is
 // thus factored once and each window costs back-substitutions and residuals
-// (the chord steps of variational::Newton with a FactorCache); a nonlinear one
-// starts each window from the previous window's factorization and refactors
-// only when the chord steps stop contracting. Under error control the step
-// changes from window to window (SetStep): the operators are rebuilt, and the
-// last factorization is still a usable chord start when the step changed by
-// a few per cent.
+// (the chord steps of variational::Newton on a kept factorization); a
+// nonlinear one starts each window from the previous window's factorization
+// and refactors only when the chord steps stop contracting. Under error
+// control the step changes from window to window (SetStep): the operators are
+// rebuilt, and the last factorization, with the step's scaling undone
+// (step_scaled_lu.h), is still the chord start.
 #pragma once
 
 #include <array>
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/step_scaled_lu.h"
 
 namespace vivp::variational::detail {
 
@@ -39,7 +40,10 @@ class WindowEngine {
         requested_dt_(dt),
         dbar_(MakeDbar(op, points, dt, sigma0)),
         system_(problem, dbar_, State{}, State{}, order),
-        y_(system_.size(), 0.0) {}
+        y_(system_.size(), 0.0),
+        lu_(d, system_.Lambda3(0), order == 2) {
+    lu_.SetStep(this->dt());
+  }
 
   const sbp::Operator<double>& D() const { return dbar_.base(); }
   int points() const { return dbar_.points(); }
@@ -47,12 +51,15 @@ class WindowEngine {
   int order() const { return system_.order(); }
 
   // The same number of points at another spacing (error control). The
-  // factorization is kept as a chord start only within 5 % of its step: the
-  // Jacobian's blocks scale like Δt and 1/Δt, and chord steps on one from a
-  // very different step are so short that the stopping rule (a correction
-  // at round-off) fires before they converge (measured: Kepler e = 0.9 with
-  // the factorization of a pericentre window, Δt = 6e-5, reused at
-  // apocentre, Δt = 1.2e-2: "converged" with the Newton start's error).
+  // Jacobian's blocks scale like Δt and 1/Δt: used as it stands, the
+  // factorization of one step is a chord start only within a few per cent
+  // of it (a first-order window: 5 %), and from a very different step its
+  // chord steps are so short that the stopping rule (a correction at
+  // round-off) fires before they converge (measured, unscaled: Kepler
+  // e = 0.9 with the factorization of a pericentre window, Δt = 6e-5, reused
+  // at apocentre, Δt = 1.2e-2: "converged" with the Newton start's error).
+  // A second-order window undoes the scaling (step_scaled_lu.h) and keeps
+  // it within a factor kScaledReuse of its step.
   // A step within 64 ε of the last one asked for is the same step: a
   // uniform march computes each window's Δt from its end times, which differ
   // from window to window in the last bits, and rebuilding the operators of
@@ -61,9 +68,13 @@ class WindowEngine {
     if (std::abs(dt - requested_dt_) <=
         64 * std::numeric_limits<double>::epsilon() * requested_dt_)
       return;
-    if (std::abs(dt / this->dt() - 1.0) > 0.05) cache_.valid = false;
+    const double ratio = dt * lu_.Ratio() / this->dt();
+    if (order() == 2 ? std::max(ratio, 1.0 / ratio) > kScaledReuse
+                     : std::abs(dt / this->dt() - 1.0) > 0.05)
+      lu_.valid = false;
     requested_dt_ = dt;
     dbar_ = MakeDbar(op_, points(), dt, sigma0_);
+    lu_.SetStep(this->dt());
     omega_end_ = -1.0;
   }
 
@@ -106,10 +117,10 @@ class WindowEngine {
       y_[system_.Lambda3(c)] = lambda3[c];
       if (order() == 2) y_[system_.Lambda4(c)] = 0.0;
     }
-    if (fresh) cache_.valid = false;
-    o.report = variational::Newton<double>(system_, y_, newton, {}, &cache_);
+    if (fresh) lu_.valid = false;
+    o.report = variational::Newton<double>(system_, y_, newton, lu_);
     if (!o.report.converged) {
-      cache_.valid = false;
+      lu_.valid = false;
       o.failure = o.report.reason;
       return o;
     }
@@ -186,7 +197,7 @@ class WindowEngine {
     return o;
   }
 
-  long long factorizations() const { return cache_.factorizations; }
+  long long factorizations() const { return lu_.factorizations(); }
 
   // ω at (x, v) when that is this engine's last hand-off state: the one it
   // evaluated at the window's end (the same time; the state differs by the
@@ -210,6 +221,24 @@ class WindowEngine {
   }
 
  private:
+  // A second-order window's factorization stays its chord start (scaled,
+  // step_scaled_lu.h) for steps within this factor of the step it was made
+  // at. Measured over the 24 marches of bench/march_phases_bench
+  // (geometric-mean time; factorizations and corrections per window):
+  //   unscaled, within 5 %   6.59 ms   0.36   2.70
+  //   scaled, factor 1.25    6.53 ms   0.28   2.85
+  //   scaled, factor 1.5     6.09 ms   0.16   3.09
+  //   scaled, factor 2       5.73 ms   0.08   3.28
+  //   scaled, factor 4       5.56 ms   0.03   3.50
+  //   scaled, any step       5.69 ms   0.01   3.83
+  // Under error control Δt follows the solution's time scale, so Δt²·V''
+  // — all the scaled equations still depend on — changes little from window
+  // to window (Kepler e = 0.9: one factorization serves pericentre and
+  // apocentre), and a chord step (residual and substitution, 2.9 µs for an
+  // SBP84 window of 48 points) costs a seventh of a fresh Jacobian
+  // (assembly and factorization, 21 µs; bench/window_algebra_bench).
+  static constexpr double kScaledReuse = 4.0;
+
   static sbp::RegularizedOperator<double> MakeDbar(const std::string& op,
                                                    int points, double dt,
                                                    double sigma0) {
@@ -225,7 +254,7 @@ class WindowEngine {
   sbp::RegularizedOperator<double> dbar_;
   action::ReducedSystem<P, double> system_;  // refers to dbar_
   std::vector<double> y_;
-  variational::FactorCache<double> cache_;
+  StepScaledLu lu_;
   // The last window's corrected end state (the next window's initial data
   // unless a fallback intervened) and ω there; ω < 0: none yet.
   State handed_x_{}, handed_v_{};
