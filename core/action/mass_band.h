@@ -17,8 +17,7 @@
 // window, computes K̃ once per window length and operator.
 #pragma once
 
-#include <algorithm>
-#include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "core/action/local_map.h"

@@ -13,56 +13,38 @@
 //
 // so J(Δt)⁻¹ ≈ Q J(Δt_f)⁻¹ R leaves the chord steps only the mismatch of the
 // position terms, (s − 1) E_xv + (s² − 1) E_xx, where the factorization used
-// as it stands leaves all of J's (1 − 1/s) E_vv as well. A LinearSolver of
-// variational::Newton (newton.h).
+// as it stands leaves all of J's (1 − 1/s) E_vv as well. The BandedSolver
+// of variational::Newton (newton.h) with its factorization and substitution
+// scaled so.
 #pragma once
-
-#include <string>
 
 #include "solvers/variational/newton.h"
 
 namespace vivp::variational::detail {
 
-class StepScaledLu {
+class StepScaledLu : public BandedSolver<double> {
  public:
-  bool valid = false;
-
   // The unknowns' layout: d components, the first λ3 unknown; `scaled`
   // false (a first-order density, whose node rows scale otherwise): the
   // factorization is used as it stands.
   StepScaledLu(int d, int lambda3, bool scaled)
       : d_(d), lambda3_(lambda3), scaled_(scaled) {}
 
-  void Invalidate() { valid = false; }
-  bool exact() const { return true; }
-  std::string message() const { return ""; }
-  long long factorizations() const { return lu_.factorizations; }
-
   // The step of the equations solved from now on; the factorization is kept.
   void SetStep(double dt) { dt_ = dt; }
   // The step now over the step the factorization was made at.
   double Ratio() const { return dt_ / factored_dt_; }
 
-  template <class System>
-  void Prepare(const System& system, const double* y) {
-    lu_.Prepare(system, y);
-    if (!lu_.valid) valid = false;
-  }
-  template <class System>
-  void Assemble(const System& system, const double* y) {
-    lu_.Assemble(system, y);
-  }
   bool Factorize() {
     factored_dt_ = dt_;
-    lu_.valid = lu_.Factorize();
-    return lu_.valid;
+    return BandedSolver<double>::Factorize();
   }
   void Solve(double* b) const {
     const double s = Ratio();
-    if (!scaled_ || s == 1.0) return lu_.Solve(b);
-    const int n = lu_.jac.size();
+    if (!scaled_ || s == 1.0) return BandedSolver<double>::Solve(b);
+    const int n = jac.size();
     for (int r = d_; r < n; ++r) b[r] *= s;  // R
-    lu_.Solve(b);
+    BandedSolver<double>::Solve(b);
     for (int c = 0; c < d_; ++c) b[lambda3_ + c] /= s;  // Q
   }
 
@@ -70,7 +52,6 @@ class StepScaledLu {
   int d_, lambda3_;
   bool scaled_;
   double dt_ = 1.0, factored_dt_ = 1.0;
-  BandedSolver<double> lu_;
 };
 
 }  // namespace vivp::variational::detail

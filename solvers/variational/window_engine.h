@@ -197,7 +197,7 @@ class WindowEngine {
     return o;
   }
 
-  long long factorizations() const { return lu_.factorizations(); }
+  long long factorizations() const { return lu_.factorizations; }
 
   // ω at (x, v) when that is this engine's last hand-off state: the one it
   // evaluated at the window's end (the same time; the state differs by the
