@@ -238,6 +238,13 @@ BOOST_AUTO_TEST_CASE(Factory_RejectsBadArguments_NamingTheValidRange) {
              }) ==
              "sbp21 operator on 4 points applied to vectors of length 3 "
              "-> 3; both must have length 4");
+  // The constructor itself refuses closures that would overlap.
+  BOOST_TEST(message([] {
+               vivp::sbp::Operator<double>(vivp::sbp::Table("sbp63"), 11, 0.0,
+                                           1.0);
+             }) ==
+             "sbp63 needs at least 12 points for its two closures, got 11; "
+             "build operators with MakeOperator");
 }
 
 BOOST_AUTO_TEST_CASE(MinimumGrid_IsSmallestWithoutOverlappingClosures) {

@@ -98,6 +98,9 @@ class Operator {
   // (docs/method.md §6: the spurious constant force).
   template <class T>
   T ApplyRow(int i, const T* u) const {
+    const int r = boundary_rows();
+    if (i < r) return ClosureRow(i, i, u);
+    if (i >= n_ - r) return ClosureRow(i - (n_ - 2 * r), i, u);
     const Row rw = row(i);
     const T& ref = u[i];
     T acc = autodiff::Lift<T>(Real(0));
@@ -135,6 +138,18 @@ class Operator {
  private:
   void CheckSize(std::size_t in, std::size_t out) const;
 
+  // Row i of a closure, the k-th of the 2r closure rows (left rows first,
+  // then the right ones top to bottom): ApplyRow's sum over the row's
+  // nonzero entries in the same order, read from the flat lists below.
+  template <class T>
+  T ClosureRow(int k, int i, const T* u) const {
+    const T& ref = u[i];
+    T acc = autodiff::Lift<T>(Real(0));
+    for (int e = closure_start_[k]; e < closure_start_[k + 1]; ++e)
+      autodiff::AddScaled(acc, closure_coeff_[e], T(u[closure_col_[e]] - ref));
+    return autodiff::Scaled(inv_dt_, acc);
+  }
+
   const Coefficients* table_;
   int n_;
   Real t_start_, t_end_, dt_, inv_dt_;
@@ -144,6 +159,14 @@ class Operator {
   std::vector<std::vector<Real>> left_;   // rows 0..r-1
   std::vector<std::vector<Real>> right_;  // right_[i] is row N-1-i
   std::vector<Real> interior_;
+  // The closures' nonzero entries with their columns, row k's at
+  // [closure_start_[k], closure_start_[k + 1]). A window of 48 points under
+  // SBP84 has 16 closure rows of up to 12 entries, more work than its 32
+  // interior rows: kept flat, without the zeros of the published blocks,
+  // the applies of a march's residuals took half the instructions of
+  // branching on each coefficient of left_/right_.
+  std::vector<int> closure_start_, closure_col_;
+  std::vector<Real> closure_coeff_;
 };
 
 }  // namespace vivp::sbp
