@@ -125,6 +125,7 @@ void WriteCheckpoint(const std::string& path,
     Attribute(g, "points", double(k.points), tmp);
     Attribute(g, "dt", k.dt, tmp);
     Attribute(g, "predictor_step", k.predictor_step, tmp);
+    Attribute(g, "predictor_factor", k.predictor_factor, tmp);
     Attribute(g, "factored", double(k.modes.factored), tmp);
     Attribute(g, "valid", double(k.modes.valid), tmp);
     const hsize_t m = hsize_t(k.modes.blocks.ltt.rows());
@@ -175,6 +176,10 @@ spacetime::FieldCheckpoint ReadCheckpoint(const std::string& path) {
   k.points = int(ReadNumber(g, "points", path));
   k.dt = ReadNumber(g, "dt", path);
   k.predictor_step = ReadNumber(g, "predictor_step", path);
+  // Absent from the checkpoints of earlier versions, which always started
+  // at the default tolerance.
+  if (H5Aexists(g, "predictor_factor") > 0)
+    k.predictor_factor = ReadNumber(g, "predictor_factor", path);
   k.modes.factored = ReadNumber(g, "factored", path) != 0;
   k.modes.valid = ReadNumber(g, "valid", path) != 0;
   const int m = c.components;

@@ -158,6 +158,11 @@ BOOST_AUTO_TEST_CASE(a_checkpoint_that_does_not_fit_is_refused) {
   bad = all[1];
   bad.phi.pop_back();
   BOOST_TEST(refused(bad, fg));
+  for (double f : {0.0, 2.0, double(NAN)}) {
+    bad = all[1];
+    bad.carry.predictor_factor = f;
+    BOOST_TEST(refused(bad, fg), "predictor factor " << f);
+  }
   FieldSolveOptions adaptive;
   adaptive.tolerance = {1e-6, 1e-6};
   BOOST_TEST(refused(all[0], fg, adaptive));

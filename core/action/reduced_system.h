@@ -193,6 +193,14 @@ class ReducedSystem : public SystemBase<P, Real> {
       a.template bottomRightCorner<d, d>() = dbar_.base().NormWeight(i) * rest;
       xv_zero = (a.template topRightCorner<d, d>().array() == Real(0)).all();
       vx_zero = (a.template bottomLeftCorner<d, d>().array() == Real(0)).all();
+      // A separable density: the one block (i, i) is H_ii A_xx (wx = 1 at
+      // node i, 0 elsewhere; the loops below add the same bits), without
+      // building and walking the local map: 31 % of the assembly of a
+      // uniform SBP84 march of the anharmonic oscillator (callgrind).
+      if (same && xv_zero && vx_zero) {
+        AddBlock(i, i, Block(a.template topLeftCorner<d, d>()), sink);
+        return true;
+      }
     }
     const LocalMap<Real> map = MakeLocalMap(dbar_, i);
     for (int ea = 0; ea < map.size; ++ea) {

@@ -137,6 +137,9 @@ class DistributedWindow {
   double omega_dt() const { return resolution_.omega_dt(); }
   double residual_norm() const { return residual_; }
   const spacetime::FieldTimings& timings() const { return timings_; }
+  // No independent integration: the factor never changes (window_solve.h).
+  double predictor_factor() const { return 1.0; }
+  void set_predictor_factor(double) {}
   const std::vector<double>& last_node() const { return last_phi_; }
   std::pair<double, double> last_estimates() const { return last_estimates_; }
   const Slab& slab() const { return slab_; }

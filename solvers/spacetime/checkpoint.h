@@ -4,8 +4,9 @@
 // The continuation of a uniform march depends on more than the hand-off
 // state (φ, φ_t) at the boundary: Newton starts the next window with chord
 // steps on the factorization the last one left, the predictor starts with
-// its last accepted step, and the time operator is kept while the step
-// stays within 64 ε of the one it was built for. A checkpoint holds all of
+// its last accepted step at the tolerance the last window settled on, and
+// the time operator is kept while the step stays within 64 ε of the one it
+// was built for. A checkpoint holds all of
 // it (FieldWindowCarry), so that a resumed march gives the same fields, bit
 // for bit, as the uninterrupted one with the space-diagonalized solve. (The
 // sparse LU's factorization is not kept: a resumed march with it refactors
@@ -70,6 +71,10 @@ inline std::string CannotResume(const FieldCheckpoint& c, const std::string& op,
     if (!std::isfinite(c.phi[k]) || !std::isfinite(c.phi_t[k]))
       return "the checkpoint's state is not finite (value " +
              std::to_string(k) + ")";
+  const double f = c.carry.predictor_factor;
+  if (!(f > 0.0 && f <= 1.0))
+    return "the checkpoint's predictor tolerance factor " + std::to_string(f) +
+           " is not in (0, 1]";
   if (c.node <= 0 || c.node >= points - 1 || c.node % (window_points - 1) != 0)
     return "the checkpoint's node " + std::to_string(c.node) +
            " is not a window boundary of this run";

@@ -123,6 +123,10 @@ class FieldWindow {
   // Why the windows are not checked against an independent integration
   // (empty: they are).
   const std::string& unchecked() const { return no_predictor_; }
+  // The factor on the predictor's tolerance a uniform march carries from
+  // window to window (window_solve.h).
+  double predictor_factor() const { return predictor_factor_; }
+  void set_predictor_factor(double f) { predictor_factor_ = f; }
 
   variational::PredictorReport Predict(double t0, const double* x0,
                                        const double* v0, const double* tau,
@@ -279,11 +283,13 @@ class FieldWindow {
   using Carry = FieldWindowCarry;
   Carry Save() const {
     return {time_.dbar ? time_.dbar->points() : 0, time_.dt,
-            predictor_ ? predictor_->first_step() : 0.0, modes_.Save()};
+            predictor_ ? predictor_->first_step() : 0.0, modes_.Save(),
+            predictor_factor_};
   }
   void Restore(const Carry& c) {
     if (c.points > 0) time_.Set(op_, c.points, c.dt);
     if (predictor_) predictor_->set_first_step(c.predictor_step);
+    predictor_factor_ = c.predictor_factor;
     modes_.Restore(c.modes);
   }
 
@@ -351,6 +357,7 @@ class FieldWindow {
   double rho_;
   std::optional<FieldPredictor<Density>> predictor_;
   std::string no_predictor_;
+  double predictor_factor_ = 1.0;
   ModesSolver<Density> modes_;
   SparseLuSolver sparse_;
   std::optional<FourierSolver<Density>> fourier_;

@@ -35,11 +35,12 @@ struct FieldBoundary {
 // What carries from one field window to the next besides the hand-off
 // state (FieldWindow::Save): the time operator's points and step (kept
 // while the step stays within 64 ε), the predictor's first step, the mode
-// solve's factorization.
+// solve's factorization, the factor on the predictor's tolerance.
 struct FieldWindowCarry {
   int points = 0;
   double dt = 0, predictor_step = 0;
   ModesSnapshot modes;
+  double predictor_factor = 1.0;
 };
 
 // What a field window needs besides the density and the grids.

@@ -58,6 +58,10 @@ class PointWindow {
                           double tol_rel, double* px, double* pv) {
     return predictor_.Run(x0, v0, tau, points, tol_abs, tol_rel, px, pv);
   }
+  // The factor on the predictor's tolerance a uniform march carries from
+  // window to window (window_solve.h).
+  double predictor_factor() const { return predictor_factor_; }
+  void set_predictor_factor(double f) { predictor_factor_ = f; }
 
   // Solves the window of a.points nodes spaced a.dt from `initial`, Newton
   // started at the predictor's path px (node-major); false (with `a`
@@ -260,6 +264,7 @@ class PointWindow {
   const MarchOptions& options_;
   int order_;
   Predictor<P> predictor_;
+  double predictor_factor_ = 1.0;
   std::vector<std::unique_ptr<WindowEngine<P>>> engines_;
   const WindowEngine<P>* last_engine_ = nullptr;  // of the last solve
 };
