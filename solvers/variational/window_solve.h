@@ -80,20 +80,19 @@ class WindowSolver {
         size = std::max({size, std::abs(x0_[c]),
                          std::abs(v0_[c]) * dt * double(points - 1)});
       predictor_tol.absolute = std::max(predictor_tol.absolute * size, 1e-300);
-      // The windows of a uniform march are alike: start at the tolerance
-      // the last one settled on rather than fail a first try at the default.
-      predictor_tol.absolute *= window_.predictor_factor();
-      predictor_tol.relative *= window_.predictor_factor();
     }
     PredictorReport pr;
     const PhaseClock clock{options_.phase_timings};
     const auto predicting = clock.Now();
-    // Of the default tolerance, this try.
+    // This try's factor on the default tolerance. The windows of a uniform
+    // march are alike: the first try is at the factor the last one settled
+    // on rather than failing at the default.
     double factor = uniform ? window_.predictor_factor() : 1.0;
     for (int tries = 0;; ++tries) {
       pr = window_.Predict(t0, x0_.data(), v0_.data(), tau_.data(), points,
-                           predictor_tol.absolute, predictor_tol.relative,
-                           px_.data(), pv_.data());
+                           factor * predictor_tol.absolute,
+                           factor * predictor_tol.relative, px_.data(),
+                           pv_.data());
       a.predictor_steps += pr.steps;
       // An unbounded start (no independent integration) cannot be tightened.
       if (!pr.ok || !uniform || tries == 3 || std::isinf(pr.error_x)) break;
@@ -111,8 +110,6 @@ class WindowSolver {
       const double next =
           std::max(factor * std::clamp(f, 1e-4, 0.5), kTightest);
       if (next >= factor) break;  // as tight as the predictor goes
-      predictor_tol.absolute *= next / factor;
-      predictor_tol.relative *= next / factor;
       factor = next;
     }
     a.phases.predictor += clock.Since(predicting);
