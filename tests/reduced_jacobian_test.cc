@@ -7,17 +7,23 @@
 // varies along the path (the assembly gives up K ⊗ M after one Jacobian),
 // and a first-order density (M = 0). Each in the band storage the solver
 // factors and through the entry-by-entry sink, three assemblies in a row.
+// Also the two shortcuts beside the assembly: K ⊗ M added at band offsets
+// located once (BandedMatrix::BlockOffset), and the Euler–Lagrange
+// acceleration from the velocity rows of the Hessian alone.
 #define BOOST_TEST_MODULE reduced_jacobian
 #include <Eigen/Dense>
 #include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
+#include "core/action/euler_lagrange.h"
 #include "core/action/reduced_system.h"
 #include "core/linalg/banded.h"
 #include "core/sbp/builder.h"
+#include "problems/anharmonic.h"
 #include "problems/cyclotron.h"
 #include "problems/damped_oscillator.h"
 #include "problems/exponential.h"
@@ -125,4 +131,56 @@ BOOST_DATA_TEST_CASE(assembled_jacobian_is_the_residuals_derivative,
   BOOST_TEST(damped < 1e-7);
   BOOST_TEST(varying < 1e-7);
   BOOST_TEST(first < 1e-7);
+}
+
+// A block added at an offset located once is the block AddBlockInBand adds,
+// to the bit, and a block reaching outside the band has no offset.
+BOOST_AUTO_TEST_CASE(block_offsets_add_what_add_block_in_band_adds) {
+  vivp::linalg::BandedMatrix<double> a(9, 3, 2), b(9, 3, 2);
+  Eigen::Matrix2d block;
+  block << 0.3, -1.7, 2.9, 0.11;
+  const double scale = 1.0 / 3.0;
+  int inside = 0;
+  for (int i = 0; i + 2 <= 9; ++i)
+    for (int j = 0; j + 2 <= 9; ++j) {
+      const std::ptrdiff_t at = a.BlockOffset<2>(i, j);
+      const bool fits =
+          b.AddBlockInBand<2>(i, j, Eigen::Matrix2d(scale * block));
+      BOOST_TEST((at >= 0) == fits);
+      if (at < 0) continue;
+      ++inside;
+      a.AddBlockAt<2>(at, scale, block);
+    }
+  BOOST_TEST(inside > 0);
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) BOOST_TEST(a(i, j) == b(i, j));
+}
+
+// ẍ from ∂L/∂x and the velocity rows [G_vx G_vv] (GradientAndLastRows)
+// against ẍ from the whole doubled-density derivatives: the same bits, for
+// a separable density (Kepler, the anharmonic oscillator) and one whose
+// velocity rows couple to the position (the cyclotron).
+template <class P>
+void CheckAcceleration(const P& problem, const double* x, const double* v) {
+  constexpr int d = P::kDim;
+  double p[2 * d];
+  for (int c = 0; c < d; ++c) {
+    p[c] = x[c];
+    p[d + c] = v[c];
+  }
+  const auto rows = vivp::action::Acceleration(problem, x, v);
+  const auto whole = vivp::action::AccelerationFrom<d>(
+      vivp::action::DiagonalDerivatives<double>(problem, p), v);
+  for (int c = 0; c < d; ++c) {
+    BOOST_TEST(std::isfinite(rows[c]));
+    BOOST_TEST(rows[c] == whole[c]);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(acceleration_from_velocity_rows_equals_whole_hessian) {
+  const double x2[] = {0.37, -1.21}, v2[] = {0.8, 2.3};
+  CheckAcceleration(vivp::problems::Kepler{.e = 0.9}, x2, v2);
+  CheckAcceleration(vivp::problems::Cyclotron{}, x2, v2);
+  const double x1[] = {0.83}, v1[] = {-0.4};
+  CheckAcceleration(vivp::problems::Anharmonic{}, x1, v1);
 }

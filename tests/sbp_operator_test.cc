@@ -6,8 +6,13 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/sbp/builder.h"
+#include "core/sbp/regularized.h"
 
 namespace bdata = boost::unit_test::data;
 using vivp::sbp::MakeOperator;
@@ -254,4 +259,45 @@ BOOST_AUTO_TEST_CASE(MinimumGrid_IsSmallestWithoutOverlappingClosures) {
     for (const auto& row : t.boundary_block)
       BOOST_TEST(static_cast<int>(row.size()) <= t.min_points, name);
   }
+}
+
+// A march under error control moves its window's operator to each new step
+// (Operator::Retime): the result is the operator built on the new interval,
+// to the bit, and a bad interval is refused as MakeOperator refuses it.
+BOOST_DATA_TEST_CASE(Retime_EqualsTheOperatorBuiltOnTheInterval,
+                     bdata::make(kNames), name) {
+  const int n = vivp::sbp::Table(name).min_points + 9;
+  auto moved = MakeOperator<double>(name, n, 0.0, 1.0);
+  vivp::sbp::RegularizedOperator<double> moved_bar(moved, -1.0);
+  moved.Retime(0.25, 0.25 + 3e-3 * (n - 1));
+  moved_bar.Retime(0.25, 0.25 + 3e-3 * (n - 1));
+  const auto built = MakeOperator<double>(name, n, 0.25, 0.25 + 3e-3 * (n - 1));
+  const vivp::sbp::RegularizedOperator<double> built_bar(built, -1.0);
+  BOOST_TEST(moved.dt() == built.dt());
+  BOOST_TEST(moved.inv_dt() == built.inv_dt());
+  BOOST_TEST(moved.t(n - 1) == built.t(n - 1));
+  BOOST_TEST(moved_bar.penalty() == built_bar.penalty());
+  std::vector<double> u(n);
+  for (int i = 0; i < n; ++i) u[i] = std::sin(0.7 * i) + 0.1 * i * i;
+  const auto a = moved.Apply(u), b = built.Apply(u);
+  const auto at = moved.ApplyTranspose(u), bt = built.ApplyTranspose(u);
+  for (int i = 0; i < n; ++i) {
+    BOOST_TEST(a[i] == b[i]);
+    BOOST_TEST(at[i] == bt[i]);
+    BOOST_TEST(moved.NormWeight(i) == built.NormWeight(i));
+  }
+  for (const auto& [t0, t1] :
+       {std::pair{1.0, 1.0}, std::pair{1.0, 0.5},
+        std::pair{0.0, std::numeric_limits<double>::infinity()}}) {
+    std::string why;
+    try {
+      moved.Retime(t0, t1);
+    } catch (const std::invalid_argument& e) {
+      why = e.what();
+    }
+    BOOST_TEST(
+        why.find("is invalid; need finite values with t_end > t_start") !=
+        std::string::npos);
+  }
+  BOOST_TEST(moved.dt() == built.dt());  // a refused interval changes nothing
 }

@@ -24,14 +24,24 @@ namespace vivp::action {
 template <class P>
 using StateVector = Eigen::Matrix<double, P::kDim, 1>;
 
+// ẍ = G_vv⁻¹(g_x − G_vx ẋ) from g_x and the velocity rows [G_vx G_vv].
+template <int d>
+Eigen::Matrix<double, d, 1> AccelerationFrom(
+    const Eigen::Matrix<double, d, 1>& gx,
+    const Eigen::Matrix<double, d, 2 * d>& velocity_rows, const double* v) {
+  const Eigen::Map<const Eigen::Matrix<double, d, 1>> vel(v);
+  const Eigen::Matrix<double, d, 1> rhs =
+      gx - velocity_rows.template leftCols<d>() * vel;
+  return velocity_rows.template rightCols<d>().partialPivLu().solve(rhs);
+}
+
 // ẍ at (x, ẋ) from the diagonal derivatives g at p = (x, ẋ).
 template <int d>
 Eigen::Matrix<double, d, 1> AccelerationFrom(const Diagonal<double, d>& g,
                                              const double* v) {
-  const Eigen::Map<const Eigen::Matrix<double, d, 1>> vel(v);
-  const Eigen::Matrix<double, d, 1> rhs =
-      g.dm.template head<d>() - g.dmp.template block<d, d>(d, 0) * vel;
-  return g.dmp.template block<d, d>(d, d).partialPivLu().solve(rhs);
+  return AccelerationFrom<d>(
+      Eigen::Matrix<double, d, 1>(g.dm.template head<d>()),
+      Eigen::Matrix<double, d, 2 * d>(g.dmp.template bottomRows<d>()), v);
 }
 
 // ẍ at (x, ẋ) of a second-order problem. (A precompiled problem evaluates
@@ -49,7 +59,20 @@ StateVector<P> Acceleration(const P& problem, const double* x,
       p[c] = x[c];
       p[d + c] = v[c];
     }
-    return AccelerationFrom<d>(DiagonalDerivatives<double>(problem, p), v);
+    if constexpr (!DifferentiatesByTerms<P, double> && !HasLambda<P>) {
+      // A Lagrangian alone: g = ∇L and G = ∇²L (density_terms.h), of which
+      // the acceleration reads ∂L/∂x and the velocity rows only. The
+      // predictor evaluates this at every stage of every step: with the
+      // whole Hessian it was 7.7 % of a march under error control (Kepler
+      // e = 0.9, SBP84, callgrind).
+      const auto g = autodiff::GradientAndLastRows<double, 2 * d, d>(
+          [&](const auto* z) { return problem(z, z + d); }, p);
+      return AccelerationFrom<d>(
+          Eigen::Matrix<double, d, 1>(g.gradient.template head<d>()), g.rows,
+          v);
+    } else {
+      return AccelerationFrom<d>(DiagonalDerivatives<double>(problem, p), v);
+    }
   }
 }
 
@@ -109,6 +132,9 @@ void EquationsOfMotion(const P& problem, int order, const double* y, double* dy,
 // The d × d solve of AccelerationFrom compiled once per dimension
 // (euler_lagrange.cc), not in every file that erases a Lagrangian.
 #define VIVP_EXTERN_ACCELERATION(D)                                \
+  extern template Eigen::Matrix<double, D, 1> AccelerationFrom<D>( \
+      const Eigen::Matrix<double, D, 1>&,                          \
+      const Eigen::Matrix<double, D, 2 * D>&, const double*);      \
   extern template Eigen::Matrix<double, D, 1> AccelerationFrom<D>( \
       const Diagonal<double, D>&, const double*);
 VIVP_PRECOMPILED_DIMS(VIVP_EXTERN_ACCELERATION)

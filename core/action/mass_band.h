@@ -64,6 +64,7 @@ class MassBand {
       }
     }
     entries_.clear();
+    ++version_;
     for (int a = 0; a < n; ++a)
       for (int k = 0; k < kWidth; ++k)
         if (const Real v = band[std::size_t(a) * kWidth + k]; v != Real(0))
@@ -77,12 +78,16 @@ class MassBand {
     Real value;
   };
   const std::vector<Entry>& Entries() const { return entries_; }
+  // Changes whenever Entries() does: what a caller that indexes the entries
+  // keys its cache on.
+  long long version() const { return version_; }
 
  private:
   const void* table_ = nullptr;
   int n_ = -1;
   Real sigma0_ = Real(0);
   std::vector<Entry> entries_;
+  long long version_ = 0;
 };
 
 }  // namespace vivp::action

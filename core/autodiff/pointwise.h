@@ -64,6 +64,41 @@ std::pair<Real, Eigen::Matrix<Real, K, 1>> Gradient(const F& f, const Real* z) {
   return {r.value(), r.derivatives()};
 }
 
+// The gradient of f at z (K values) and the last R rows of its Hessian,
+// ∂²f/∂z_r∂z for r ≥ K − R: the outer derivatives run over all K variables,
+// the inner ones over the last R only. The Euler–Lagrange acceleration needs
+// ∂L/∂x and the velocity rows ∂²L/∂ẋ∂(x, ẋ), not ∂²L/∂x²: at K = 2R this
+// carries R + 1 inner values per outer one where Hessian carries K + 1.
+// Each derivative is formed by the same operations as Hessian's.
+template <class Real, int K, int R>
+struct GradientRows {
+  Eigen::Matrix<Real, K, 1> gradient;
+  Eigen::Matrix<Real, R, K> rows;
+};
+
+template <class Real, int K, int R, class F>
+GradientRows<Real, K, R> GradientAndLastRows(const F& f, const Real* z) {
+  static_assert(R >= 1 && R <= K);
+  using Inner = First<Real, R>;
+  using Outer = Eigen::AutoDiffScalar<Eigen::Matrix<Inner, K, 1>>;
+  using InnerVec = Eigen::Matrix<Real, R, 1>;
+  Outer vars[K];
+  for (int k = 0; k < K; ++k) {
+    const InnerVec seed =
+        k >= K - R ? InnerVec(InnerVec::Unit(k - (K - R))) : InnerVec::Zero();
+    vars[k].value() = Inner(z[k], seed);
+    for (int j = 0; j < K; ++j)
+      vars[k].derivatives()[j] = Inner(Real(j == k), InnerVec::Zero());
+  }
+  const Outer r = f(vars);
+  GradientRows<Real, K, R> out;
+  for (int k = 0; k < K; ++k) {
+    out.gradient[k] = r.derivatives()[k].value();
+    out.rows.col(k) = r.derivatives()[k].derivatives();
+  }
+  return out;
+}
+
 // For f(p, m) with P "plus" and M "minus" variables, at m = m0:
 //   dm  = ∂f/∂m            (M)
 //   dmp = ∂²f/∂m∂p         (M x P), row j = d(∂f/∂m_j)/dp

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Sparse>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -59,6 +60,32 @@ class BandedMatrix {
       for (int r = 0; r < k; ++r) column[r] += block(r, s);
     }
     return true;
+  }
+  // Where AddBlockInBand would put a k × k block at (i0, j0): its first
+  // entry's index in the storage, or −1 when the block is not inside the
+  // band. AddBlockAt then adds a block there without the check: a block
+  // added at the same places every assembly (reduced_system.h, K ⊗ M)
+  // locates them once.
+  template <int k>
+  std::ptrdiff_t BlockOffset(int i0, int j0) const {
+    if (i0 < 0 || j0 < 0 || i0 + k > n_ || j0 + k > n_ ||
+        i0 - j0 - (k - 1) < -ku_ || i0 + (k - 1) - j0 > kl_)
+      return -1;
+    return static_cast<std::ptrdiff_t>(Index(i0, j0));
+  }
+  // A(i0 + r, j0 + s) += scale · block(r, s) at an offset from BlockOffset
+  // (along a row the storage steps by ld − 1). Each entry's product is
+  // formed before it is added, as AddBlockInBand adds a block formed first:
+  // the same bits.
+  template <int k, class Block>
+  void AddBlockAt(std::ptrdiff_t offset, Real scale, const Block& block) {
+    for (int s = 0; s < k; ++s) {
+      Real* column = &data_[std::size_t(offset) + std::size_t(s) * (ld_ - 1)];
+      for (int r = 0; r < k; ++r) {
+        const Real entry = scale * block(r, s);
+        column[r] += entry;
+      }
+    }
   }
   Real operator()(int i, int j) const {
     if (i - j > kl_ || j - i > ku_) return Real(0);

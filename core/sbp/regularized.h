@@ -33,6 +33,12 @@ class RegularizedOperator {
   }
 
   const Operator<Real>& base() const { return d_; }
+  // The same operator on [t_start, t_end] (Operator::Retime), its penalty
+  // recomputed as the constructor computes it.
+  void Retime(Real t_start, Real t_end) {
+    d_.Retime(t_start, t_end);
+    penalty_ = -sigma0_ / d_.NormWeight(0);
+  }
   Real sigma0() const { return sigma0_; }
   int points() const { return d_.points(); }
   // -sigma0 / H_00: the coefficient of (x_0 - x_i) added to row 0.
