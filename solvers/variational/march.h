@@ -68,7 +68,7 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
   // Validates the grid (operator, points, interval) once; under error
   // control the operator's minimum stands in for the points.
   const int min_points = sbp::Table(grid.op).min_points;
-  const auto global = sbp::MakeOperator<double>(
+  sbp::CheckOperatorArguments<double>(
       grid.op, adaptive ? min_points : grid.points, grid.t_start, grid.t_end);
   if (options.window_points < min_points)
     throw std::invalid_argument(
