@@ -7,8 +7,6 @@
 //   "sbp42 needs at least 8 points, got 5"
 #pragma once
 
-#include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -77,13 +75,7 @@ const Coefficients& CheckOperatorArguments(std::string_view name,
     throw std::invalid_argument("too many points (" + std::to_string(points) +
                                 "); at most 2^30 are supported");
   }
-  if (!std::isfinite(static_cast<long double>(t_start)) ||
-      !std::isfinite(static_cast<long double>(t_end)) || !(t_end > t_start)) {
-    std::ostringstream msg;
-    msg << "time interval [" << t_start << ", " << t_end
-        << "] is invalid; need finite values with t_end > t_start";
-    throw std::invalid_argument(msg.str());
-  }
+  CheckInterval(t_start, t_end);
   return table;
 }
 

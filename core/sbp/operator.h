@@ -34,6 +34,19 @@
 
 namespace vivp::sbp {
 
+// Throws std::invalid_argument unless t_end > t_start, both finite: the
+// interval of an operator (MakeOperator, Operator::Retime).
+template <class Real>
+void CheckInterval(Real t_start, Real t_end) {
+  if (!std::isfinite(static_cast<long double>(t_start)) ||
+      !std::isfinite(static_cast<long double>(t_end)) || !(t_end > t_start)) {
+    std::ostringstream msg;
+    msg << "time interval [" << t_start << ", " << t_end
+        << "] is invalid; need finite values with t_end > t_start";
+    throw std::invalid_argument(msg.str());
+  }
+}
+
 template <class Real>
 class Operator {
  public:
@@ -75,14 +88,7 @@ class Operator {
   // callgrind). Throws std::invalid_argument unless t_end > t_start, both
   // finite.
   void Retime(Real t_start, Real t_end) {
-    if (!std::isfinite(static_cast<long double>(t_start)) ||
-        !std::isfinite(static_cast<long double>(t_end)) || !(t_end > t_start)) {
-      std::ostringstream msg;  // as MakeOperator words it
-      msg << "time interval [" << static_cast<double>(t_start) << ", "
-          << static_cast<double>(t_end)
-          << "] is invalid; need finite values with t_end > t_start";
-      throw std::invalid_argument(msg.str());
-    }
+    CheckInterval(t_start, t_end);
     t_start_ = t_start;
     t_end_ = t_end;
     dt_ = (t_end - t_start) / static_cast<Real>(n_ - 1);
