@@ -143,9 +143,12 @@ class WindowEngine {
       if (windows_since_young_failure_ <= kRecurrence)
         fresh_windows_ = kFreshWindows;
       windows_since_young_failure_ = 0;
+      lu_.valid = false;
+    } else if (fresh_windows_ > 0) {
+      --fresh_windows_;
+      lu_.valid = false;
     }
-    if (fresh || refactor_next_ || fresh_windows_ > 0) lu_.valid = false;
-    if (!refactor_next_ && fresh_windows_ > 0) --fresh_windows_;
+    if (fresh) lu_.valid = false;
     const bool stale_start = lu_.valid;
     o.report = variational::Newton<double>(system_, y_, newton, lu_);
     const bool refactored = o.report.iterations > 0;
