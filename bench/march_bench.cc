@@ -20,6 +20,7 @@
 #include <string>
 
 #include "bench/timing.h"
+#include "solvers/variational/solver_choice.h"
 #include "studies/registry.h"
 
 using namespace vivp;
@@ -131,7 +132,7 @@ void ThroughputTable() {
   std::printf(
       "\n# throughput, SBP42, default window (%lld points), streamed output;\n"
       "# global = one reduced Newton solve of all points (max 20 iterations)\n",
-      MarchOptions{}.window_points);
+      DefaultWindowPoints(Path::kReducedNewton, "sbp42"));
   std::printf("%-10s %9s %10s | %12s %10s %9s | %12s %10s %9s\n", "problem",
               "Nt", "T", "march pts/s", "err x(T)", "peak MB", "global pts/s",
               "err x(T)", "peak MB");
@@ -141,8 +142,10 @@ void ThroughputTable() {
     for (long long n = 1 << 10; n <= (1 << 22); n *= 4) {
       const Grid g = FixedStep(n, c.dt);
       const int repeats = n <= (1 << 16) ? 5 : 3;
-      const Sample m = InChild(
-          [&] { return March(p, g, MarchOptions{}.window_points, repeats); });
+      const Sample m = InChild([&] {
+        return March(p, g, DefaultWindowPoints(Path::kReducedNewton, "sbp42"),
+                     repeats);
+      });
       std::printf("%-10s %9lld %10.1f | %12.3e %10.2e %9.1f | ", c.name, n,
                   g.t_end, double(n) / m.seconds, m.error, m.rss_kb / 1024.0);
       // The global solve holds every point: up to 2^20 for the linear

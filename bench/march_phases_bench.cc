@@ -10,7 +10,8 @@
 // [PROBLEM T_END OP TOL ...]
 // Default rows: Kepler e = 0.9 over 3 orbits and the anharmonic oscillator
 // to t = 10, SBP42/63/84, tolerances 1e-5 … 1e-8 (the comparison of
-// `vivp bench`), in windows of W points (default: MarchOptions'). Times are
+// `vivp bench`), in windows of W points (default: the march's default
+// under error control, DefaultWindowPoints), both marches. Times are
 // the median of R runs (default 5); the phases come from the run with the
 // median total. The marches keep no trajectory (the solver's cost alone);
 // --trajectory keeps every node in both, as a caller that stores them does
@@ -22,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "solvers/variational/solver_choice.h"
 #include "studies/registry.h"
 
 using namespace vivp;
@@ -130,7 +132,8 @@ void Measure(const Row& row, int repeats, long long window, bool trajectory) {
 
 int main(int argc, char** argv) {
   int repeats = 5;
-  long long window = MarchOptions{}.window_points;
+  // Both marches of a row in the same windows: those of error control.
+  long long window = DefaultWindowPoints(Path::kReducedNewton, "sbp84", true);
   bool trajectory = false;
   std::vector<Row> rows;
   std::vector<std::string> args(argv + 1, argv + argc);

@@ -11,6 +11,7 @@
 
 #include "core/sbp/builder.h"
 #include "problems/damped_oscillator.h"
+#include "solvers/variational/solver_choice.h"
 #include "studies/bench_problems.h"
 #include "studies/registry.h"
 
@@ -27,6 +28,13 @@ std::string Operator(const std::string& method) {
   return op;
 }
 bool Adaptive(const std::string& method) { return !method.ends_with(kUniform); }
+
+// The window of a configuration's march: the default of Newton's march on a
+// uniform grid or under error control (MarchOptions).
+long long WindowPoints(const std::string& method) {
+  return variational::DefaultWindowPoints(variational::Path::kReducedNewton,
+                                          Operator(method), Adaptive(method));
+}
 
 // The march of one configuration: a tolerance (absolute = relative) or a
 // uniform grid of `knob` steps, in the default windows.
@@ -97,8 +105,7 @@ ExternalRun RunVariational(const std::string& method,
   // Residual evaluations: each Newton/chord step of a window costs one
   // pointwise gradient per node, plus the first residual of each window;
   // the predictor's Dormand–Prince steps six equations of motion each.
-  run.evaluations = (m.corrections + m.window_count) *
-                        variational::MarchOptions{}.window_points +
+  run.evaluations = (m.corrections + m.window_count) * WindowPoints(method) +
                     6 * m.predictor_steps;
   run.iterations = m.corrections;
   return run;
@@ -149,8 +156,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
                                exact.Energy(e.x, e.v)));
   }
   w.energy_error = de / e0;
-  w.evaluations = (m.corrections + m.window_count) *
-                      variational::MarchOptions{}.window_points +
+  w.evaluations = (m.corrections + m.window_count) * WindowPoints(method) +
                   6 * m.predictor_steps;
   w.iterations = m.corrections;
   return w;

@@ -221,7 +221,7 @@ BOOST_AUTO_TEST_CASE(ImpossibleCombinations_OneSentenceInTheCommandLineWords) {
   BOOST_TEST(refusal("--tolerance 1e-6 --slab-points 0") ==
              "vivp: error: --tolerance marches in windows, but --slab-points "
              "0 asks for one global solve; expected --slab-points >= 8 or no "
-             "--slab-points (48)\n");
+             "--slab-points (24)\n");
   BOOST_TEST(refusal("--solver ceres-lm --extended-residual") ==
              "vivp: error: --extended-residual evaluates reduced Newton's "
              "residual in long double, which --solver ceres-lm does not use; "

@@ -84,8 +84,9 @@ BOOST_AUTO_TEST_CASE(SolverNames_ParseBothWays) {
 
 BOOST_AUTO_TEST_CASE(Windows_LmMarchesByDefaultNewtonSolvesGlobally) {
   BOOST_TEST(WindowPoints({.path = Path::kReducedNewton}) == 0);
+  // Newton under error control: windows of 24 (solver_choice.h).
   BOOST_TEST(WindowPoints({.path = Path::kReducedNewton, .tolerance = true}) ==
-             48);
+             24);
   BOOST_TEST(WindowPoints({.path = Path::kCeresLm, .op = "sbp42"}) ==
              DefaultWindowPoints(Path::kCeresLm, "sbp42"));
   BOOST_TEST(WindowPoints({.path = Path::kCeresLm, .window_points = 0}) == 0);
@@ -116,11 +117,11 @@ BOOST_AUTO_TEST_CASE(ImpossibleCombinations_RefusedAsDataInTheApiWords) {
   BOOST_TEST((global.reason == R::kToleranceWithoutWindows));
   BOOST_TEST((global.setting == Setting::kWindowPoints));
   BOOST_TEST(global.value == "0");
-  BOOST_TEST(global.fallback == 48);
+  BOOST_TEST(global.fallback == 24);
   BOOST_TEST(api({.window_points = 0, .tolerance = true}) ==
              "tolerance marches in windows, but window_points 0 asks for "
              "one global solve; expected window_points >= 8 or no "
-             "window_points (48)");
+             "window_points (24)");
   const Refusal residual =
       CheckSolveRequest({.path = Path::kCeresLm, .extended_residual = true});
   BOOST_TEST((residual.reason == R::kResidualUnused));
@@ -155,7 +156,7 @@ BOOST_AUTO_TEST_CASE(Scene_SameSentenceAtItsPosition) {
   BOOST_TEST(SceneError(SpringScene("slab_points = 0\ntolerance = 1e-6", "")) ==
              "lm.toml:15:15: a tolerance marches in windows, but slab_points = "
              "0 asks for one global solve; expected slab_points >= 8 or no "
-             "slab_points (48)");
+             "slab_points (24)");
   BOOST_TEST(SceneError(SpringScene("operator = \"sbp84\"\nsolver = "
                                     "\"ceres-lm\"",
                                     "points = 1001"))

@@ -326,7 +326,7 @@ BOOST_AUTO_TEST_CASE(Tolerance_MarchesUnderErrorControl) {
       ParseScene(With(18, "", {"[method]", "tolerance = 1e-6"}), "a.toml");
   BOOST_TEST(a.method.tolerance.absolute == 1e-6);
   BOOST_TEST(a.method.tolerance.relative == 1e-6);
-  BOOST_TEST(a.method.slab_points == 48);
+  BOOST_TEST(a.method.slab_points == 24);
   BOOST_TEST(a.points == 0);
   const Scene b =
       ParseScene(With(18, "",
@@ -371,7 +371,7 @@ BOOST_AUTO_TEST_CASE(BadInput_Tolerance) {
           With(18, "", {"[method]", "slab_points = 0", "tolerance = 1e-6"})) ==
       "bad.toml:20:15: a tolerance marches in windows, but slab_points = 0 "
       "asks for one global solve; expected slab_points >= 8 or no "
-      "slab_points (48)");
+      "slab_points (24)");
   BOOST_TEST(ErrorOf(With(
                  18, "", {"[method]", "kind = \"rk4\"", "tolerance = 1e-6"})) ==
              "bad.toml:21:13: 'tolerance' applies to kind = \"variational\" "

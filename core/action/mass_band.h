@@ -17,6 +17,7 @@
 // window, computes K̃ once per window length and operator.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -49,24 +50,39 @@ class MassBand {
     constexpr int kHalf = 2 * kMaxLocal;
     constexpr int kWidth = 2 * kHalf + 1;
     std::vector<Real> band(std::size_t(n) * kWidth, Real(0));
+    std::vector<int> first(n, kWidth), last(n, -1);
     const Real inv_dt = D.inv_dt();
+    // Each weight Δt ∂v_i/∂x_a divided once per node, not once per pair
+    // (the same bits: 115 k → 40 k instructions for a window of 48 points
+    // under SBP84, a fixed cost of every march, callgrind).
+    Real w[kMaxLocal];
     for (int i = 0; i < n; ++i) {
       const LocalMap<Real> map = MakeLocalMap(dbar, i);
       const Real h = D.NormWeight(i) * inv_dt;  // H_ii / Δt
+      int lo = n, hi = -1;
+      for (int e = 0; e < map.size; ++e) {
+        w[e] = map.entries[e].wv / inv_dt;
+        lo = std::min(lo, map.entries[e].node);
+        hi = std::max(hi, map.entries[e].node);
+      }
       for (int ea = 0; ea < map.size; ++ea) {
-        const Real wa = map.entries[ea].wv / inv_dt;  // Δt ∂v_i/∂x_a
+        const Real wa = w[ea];  // Δt ∂v_i/∂x_a
         if (wa == Real(0)) continue;
-        for (int eb = 0; eb < map.size; ++eb) {
-          const Real wb = map.entries[eb].wv / inv_dt;
-          const int a = map.entries[ea].node, b = map.entries[eb].node;
-          band[std::size_t(a) * kWidth + (b - a + kHalf)] += h * wa * wb;
-        }
+        const Real hwa = h * wa;
+        const int a = map.entries[ea].node;
+        Real* row = &band[std::size_t(a) * kWidth + kHalf - a];
+        for (int eb = 0; eb < map.size; ++eb)
+          row[map.entries[eb].node] += hwa * w[eb];
+        // The columns reached, so that the compression below reads only
+        // those.
+        first[a] = std::min(first[a], lo - a + kHalf);
+        last[a] = std::max(last[a], hi - a + kHalf);
       }
     }
     entries_.clear();
     ++version_;
     for (int a = 0; a < n; ++a)
-      for (int k = 0; k < kWidth; ++k)
+      for (int k = first[a]; k <= last[a]; ++k)
         if (const Real v = band[std::size_t(a) * kWidth + k]; v != Real(0))
           entries_.push_back({a, a + k - kHalf, v});
     return true;

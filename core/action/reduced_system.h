@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "core/action/density.h"
@@ -245,6 +246,41 @@ class ReducedSystem : public SystemBase<P, Real> {
                                                   X(entries[e].column, 0));
         scratch_.mass_offsets_key = key;
       }
+      // A march on a uniform grid assembles K ⊗ M with the same step and
+      // mass at every refactorization: from the second such assembly on,
+      // the in-band blocks come from a band holding their products, added
+      // column by column (the same products added in the same place: the
+      // same bits). 6 % of a uniform SBP84 march of the anharmonic
+      // oscillator went into the blocks one by one (callgrind).
+      if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
+        auto& fill = scratch_.mass_fill;
+        const bool repeat = key == scratch_.mass_fill_key &&
+                            inv_dt == scratch_.mass_fill_inv_dt &&
+                            mass == scratch_.mass_fill_mass;
+        if (repeat) {
+          auto& outside = scratch_.mass_fill_outside;
+          if (!scratch_.mass_fill_ready) {
+            fill = Sink(sink.size(), sink.lower(), sink.upper());
+            outside.clear();
+            for (std::size_t e = 0; e < entries.size(); ++e)
+              if (cache[e] >= 0)
+                fill.template AddBlockAt<d>(cache[e], inv_dt * entries[e].value,
+                                            mass);
+              else
+                outside.push_back(e);
+            scratch_.mass_fill_ready = true;
+          }
+          sink.AddSameBand(fill);
+          for (const std::size_t e : outside)
+            AddBlock(entries[e].row, entries[e].column,
+                     Block(inv_dt * entries[e].value * mass), sink);
+          return;
+        }
+        scratch_.mass_fill_key = key;
+        scratch_.mass_fill_inv_dt = inv_dt;
+        scratch_.mass_fill_mass = mass;
+        scratch_.mass_fill_ready = false;
+      }
       for (std::size_t e = 0; e < entries.size(); ++e) {
         const Real scale = inv_dt * entries[e].value;
         if (cache[e] >= 0)
@@ -296,6 +332,14 @@ class ReducedSystem : public SystemBase<P, Real> {
     // band of mass_offsets_key (mass_band's version, n, kl, ku).
     std::vector<std::ptrdiff_t> mass_offsets;
     std::array<long long, 4> mass_offsets_key = {-1, -1, -1, -1};
+    // The in-band blocks of K ⊗ M at the step and mass of the last
+    // assembly, once a second assembly repeated them (AddMassBand).
+    linalg::BandedMatrix<Real> mass_fill;
+    std::array<long long, 4> mass_fill_key = {-1, -1, -1, -1};
+    Real mass_fill_inv_dt = Real(0);
+    Block mass_fill_mass = Block::Zero();
+    bool mass_fill_ready = false;
+    std::vector<std::size_t> mass_fill_outside;  // entries outside the band
   };
   mutable Scratch scratch_;
   // Whether the last whole assembly found one vv block at every node.

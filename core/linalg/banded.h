@@ -36,6 +36,18 @@ class BandedMatrix {
 
   void SetZero() { std::fill(data_.begin(), data_.end(), Real(0)); }
 
+  // A += B for B of the same size and band: the whole storage in one
+  // sweep, so an entry of A that B does not touch gains an exact zero (and
+  // LU's fill-in rows, zero in both before a factorization, stay zero).
+  void AddSameBand(const BandedMatrix& b) {
+    if (b.n_ != n_ || b.kl_ != kl_ || b.ku_ != ku_)
+      throw std::logic_error("AddSameBand: different sizes or bands");
+    Real* __restrict a = data_.data();
+    const Real* __restrict c = b.data_.data();
+    const std::size_t size = data_.size();
+    for (std::size_t i = 0; i < size; ++i) a[i] += c[i];
+  }
+
   // A(i, j) += v. Entries outside the declared band are a programming error.
   // Assembly calls this for every entry of every node (a fifth of a marched
   // window's instructions, callgrind), so the check is two unsigned

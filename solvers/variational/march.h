@@ -46,16 +46,23 @@
 #include "solvers/variational/march_uniform.h"
 #include "solvers/variational/point_window.h"
 #include "solvers/variational/solve_ivp.h"
+#include "solvers/variational/solver_choice.h"
 
 namespace vivp::variational {
 
 template <action::LagrangianProblem P>
 MarchResult MarchIvp(const P& problem, const InitialData& initial,
-                     const Grid& grid, const MarchOptions& options = {},
+                     const Grid& grid, const MarchOptions& given = {},
                      const NodeObserver& observer = {}) {
   constexpr int d = P::kDim;
   const auto start = std::chrono::steady_clock::now();
-  const bool adaptive = options.tolerance.enabled();
+  const bool adaptive = given.tolerance.enabled();
+  // window_points = 0: the solver's default for a uniform grid or error
+  // control (solver_choice.h).
+  MarchOptions options = given;
+  if (options.window_points == 0)
+    options.window_points =
+        DefaultWindowPoints(options.solve.path, grid.op, adaptive);
   const Tolerance& tol = options.tolerance;
   if (adaptive &&
       !(std::isfinite(tol.absolute) && std::isfinite(tol.relative) &&

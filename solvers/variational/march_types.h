@@ -55,13 +55,15 @@ struct MarchPhases {
 };
 
 struct MarchOptions {
-  // Default by measurement (bench/march_bench, SBP42, Nt = 2^18, points per
-  // second): damped oscillator W = 16/32/48/64/128: 7.7/9.7/10.9/11.1/7.2 e6;
-  // anharmonic 3.5/3.8/4.0/3.5/2.2 e6 (from 128 points on, the previous
-  // window's Jacobian stops contracting and most windows refactor). 48 is
-  // within noise of the best for both; end errors grow slowly with W
-  // (damped at T = 3277: 4.9e-7 at 32, 5.8e-7 at 48).
-  long long window_points = 48;
+  // Points per window; 0: DefaultWindowPoints of the solver (solver_choice.h)
+  // — for Newton 48 on a uniform grid and 24 under error control. On a
+  // uniform grid by measurement (bench/march_bench, SBP42, Nt = 2^18,
+  // points per second): damped oscillator W = 16/32/48/64/128:
+  // 7.7/9.7/10.9/11.1/7.2 e6; anharmonic 3.5/3.8/4.0/3.5/2.2 e6 (from 128
+  // points on, the previous window's Jacobian stops contracting and most
+  // windows refactor). 48 is within noise of the best for both; end errors
+  // grow slowly with W (damped at T = 3277: 4.9e-7 at 32, 5.8e-7 at 48).
+  long long window_points = 0;
   HandOff hand_off = HandOff::kCorrected;
   int max_split_depth = 4;  // fallback: halve a failing window up to 4 times
   bool keep_trajectory = true;  // also keeps the per-window reports

@@ -56,17 +56,19 @@ IvpSolution<double> Solve(const P& problem, const InitialData& initial,
   return SolveIvp(problem, initial, grid, options);
 }
 
-// A march in windows of options.window_points, each window solved by
-// options.solve.path; the observer (may be empty) sees every node once.
+// A march in windows of options.window_points (0: the solver's default),
+// each window solved by options.solve.path; the observer (may be empty) sees
+// every node once.
 template <action::LagrangianProblem P>
 MarchResult Solve(const P& problem, const InitialData& initial,
                   const Grid& grid, const MarchOptions& options,
                   const NodeObserver& observer = {}) {
-  detail::Require({.path = options.solve.path,
-                   .op = grid.op,
-                   .window_points = options.window_points,
-                   .tolerance = options.tolerance.enabled(),
-                   .extended_residual = options.solve.extended_residual});
+  detail::Require(
+      {.path = options.solve.path,
+       .op = grid.op,
+       .window_points = options.window_points > 0 ? options.window_points : -1,
+       .tolerance = options.tolerance.enabled(),
+       .extended_residual = options.solve.extended_residual});
   return MarchIvp(problem, initial, grid, options, observer);
 }
 
