@@ -312,7 +312,7 @@ Runner AddConvergeCommand(CLI::App& app) {
                   "error control: comma-separated tolerances (absolute = "
                   "relative), a study of the achieved error, points and time "
                   "per tolerance; marches in windows of --slab-points "
-                  "(default 48)")
+                  "(default 24)")
       ->excludes(points);
   cmd->add_option("--solver", o->solver,
                   "newton | full-newton | ceres-lm (Ceres LM marches in "
