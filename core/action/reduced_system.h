@@ -249,8 +249,8 @@ class ReducedSystem : public SystemBase<P, Real> {
       // A march on a uniform grid assembles K ⊗ M with the same step and
       // mass at every refactorization: from the second such assembly on,
       // the in-band blocks come from a band holding their products, added
-      // column by column (the same products added in the same place: the
-      // same bits). 6 % of a uniform SBP84 march of the anharmonic
+      // in one sweep over its storage (the same products added in the same
+      // places: the same bits). 6 % of a uniform SBP84 march of the anharmonic
       // oscillator went into the blocks one by one (callgrind).
       if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
         auto& fill = scratch_.mass_fill;

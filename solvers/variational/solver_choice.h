@@ -49,14 +49,14 @@ inline Path ParseSolver(const std::string& name) {
 // under error control (`tolerance`): 24 points. A window's step is one for
 // all its nodes, so a window adapts its step once per W − 1 nodes, and its
 // error estimates grow with its length; on an eccentric orbit, whose time
-// scale changes by a factor of 30 within a period, shorter windows follow
+// scale changes by a factor of about 80 within a period, shorter windows follow
 // it with fewer nodes (Kepler e = 0.9, SBP84, 10⁻⁵: 2415 nodes in windows
 // of 24 against 3432 in windows of 48). Fitted to end errors of 10⁻⁸ over
 // tolerances 3·10⁻⁵ … 3·10⁻⁷, that march takes 27.5 M instructions in
 // windows of 24, 29.6 M in windows of 32 and 37.0 M in windows of 48
-// (callgrind; docs/performance.md §2). Ceres LM marches by default, in
-// the largest window in which it keeps the Newton march's accuracy and
-// iteration count, measured per operator (core/sbp,
+// (callgrind; docs/error_control.md, docs/performance.md §3). Ceres LM marches
+// by default, in the largest window in which it keeps the Newton march's
+// accuracy and iteration count, measured per operator (core/sbp,
 // Measured::lm_window_points); 0: no window keeps them. An unknown operator
 // is std::invalid_argument naming the valid ones.
 inline long long DefaultWindowPoints(Path path, const std::string& op,
