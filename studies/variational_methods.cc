@@ -30,8 +30,9 @@ std::string Operator(const std::string& method) {
 bool Adaptive(const std::string& method) { return !method.ends_with(kUniform); }
 
 // The window of a configuration's march: the default of Newton's march on a
-// uniform grid or under error control (MarchOptions).
-long long WindowPoints(const std::string& method) {
+// uniform grid or under error control. March sets it, and the evaluation
+// counts below use it.
+long long MethodWindow(const std::string& method) {
   return variational::DefaultWindowPoints(variational::Path::kReducedNewton,
                                           Operator(method), Adaptive(method));
 }
@@ -44,6 +45,7 @@ variational::MarchResult March(const NamedProblem& p, const std::string& method,
   variational::Grid g{.op = Operator(method), .t_start = 0.0, .t_end = t_end};
   variational::MarchOptions o;
   o.keep_trajectory = trajectory;
+  o.window_points = MethodWindow(method);
   if (Adaptive(method)) {
     o.tolerance = {knob, knob};
   } else {
@@ -105,7 +107,7 @@ ExternalRun RunVariational(const std::string& method,
   // Residual evaluations: each Newton/chord step of a window costs one
   // pointwise gradient per node, plus the first residual of each window;
   // the predictor's Dormand–Prince steps six equations of motion each.
-  run.evaluations = (m.corrections + m.window_count) * WindowPoints(method) +
+  run.evaluations = (m.corrections + m.window_count) * MethodWindow(method) +
                     6 * m.predictor_steps;
   run.iterations = m.corrections;
   return run;
@@ -156,7 +158,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
                                exact.Energy(e.x, e.v)));
   }
   w.energy_error = de / e0;
-  w.evaluations = (m.corrections + m.window_count) * WindowPoints(method) +
+  w.evaluations = (m.corrections + m.window_count) * MethodWindow(method) +
                   6 * m.predictor_steps;
   w.iterations = m.corrections;
   return w;

@@ -88,7 +88,8 @@ class StepController {
   // what the tolerance allows. From ½ the growth is that of the
   // proportional term, at most ×2: 3432 nodes instead of 4231, 35.8 M
   // instructions instead of 34.4 M at that tolerance with an end error of
-  // 4.0e-9 instead of 3.9e-8 (callgrind; docs/performance.md §2).
+  // 4.0e-9 instead of 3.9e-8 (callgrind; docs/error_control.md, "The integral
+  // term's floor").
   static constexpr double kPreviousFloor = 0.5;
   static constexpr double kKeepFrom = 0.85, kKeepBelow = 1.2;
   double q_;
