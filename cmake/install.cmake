@@ -76,4 +76,5 @@ write_basic_package_version_file(
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/vivpConfig.cmake
               ${PROJECT_BINARY_DIR}/vivpConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/inline_pointwise.cmake
         DESTINATION ${VIVP_INSTALL_CMAKEDIR})
