@@ -13,6 +13,7 @@
 // (step_scaled_lu.h), is still the chord start.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -121,28 +122,24 @@ class WindowEngine {
       y_[system_.Lambda3(c)] = lambda3[c];
       if (order() == 2) y_[system_.Lambda4(c)] = 0.0;
     }
-    // A factorization one window old whose chord steps failed in the last
-    // window (it refactored there) says that the Jacobian moves too far in
-    // one window to be reused: the factorization made there is as old now,
-    // so this window starts with its own instead of failing chord steps
-    // first (callgrind, twelve uniform marches: 200.9 → 196.1 M, none
-    // worse; anharmonic SBP84 at 1024 steps −9 %, Kepler e = 0.9 at 8192
-    // −6 %). Refactoring after any failure, whatever the factorization's
-    // age, lost up to 2 % on marches that reuse one over many windows.
-    // When that happens twice within kRecurrence windows, fresh windows and
-    // windows failing on their predecessor's factorization alternate (three
-    // chord steps lost in every second window: anharmonic oscillator at
-    // SBP84, 1024 steps), and the next kFreshWindows windows start with
-    // their own factorization without trying the last one (callgrind,
-    // twelve uniform marches: 194.8 → 194.2 M instructions, none more than
-    // 0.01 M; anharmonic SBP84 at 1024 steps −5.6 %, SBP63 at 1024 −5 %;
-    // adaptive Kepler e = 0.9 unchanged. Without the recurrence condition:
-    // 192.3 M, but the adaptive Kepler march +3 %).
-    ++windows_since_young_failure_;
+    // Whether this window starts on the last window's factorization (chord
+    // steps) or with one of its own. A stale start is wasted when the
+    // factorization is one window old (made in the window before) and its
+    // chord steps either failed (Newton refactored) or converged more slowly
+    // than a fresh start would have: more than kSlowChords corrections. The
+    // factorization made in its place will be as old in the next window, so
+    // the next one starts with its own. When the first stale start after
+    // such fresh windows is wasted again, the next fresh_run_ windows start
+    // with their own, the run doubling each time (4, 8, 16 …, at most 64)
+    // until a stale start pays. A factorization older than one window that
+    // fails or slows is just renewed: marches that reuse one over many
+    // windows (Kepler e = 0.9 on a uniform grid: 3 factorizations in 349
+    // windows) lost up to 2 % when any failure triggered fresh windows
+    // (callgrind, 28 November).
+    // Measured in time (docs/performance.md §2): on the anharmonic
+    // oscillator a window's Jacobian moves so far that chord steps on the
+    // last one took 6.6 corrections where a fresh start takes 2.
     if (refactor_next_) {
-      if (windows_since_young_failure_ <= kRecurrence)
-        fresh_windows_ = kFreshWindows;
-      windows_since_young_failure_ = 0;
       lu_.valid = false;
     } else if (fresh_windows_ > 0) {
       --fresh_windows_;
@@ -152,7 +149,22 @@ class WindowEngine {
     const bool stale_start = lu_.valid;
     o.report = variational::Newton<double>(system_, y_, newton, lu_);
     const bool refactored = o.report.iterations > 0;
-    refactor_next_ = stale_start && refactored && factorization_age_ <= 1;
+    refactor_next_ = false;
+    if (stale_start) {
+      const bool wasted = factorization_age_ <= 1 &&
+                          (refactored || o.report.corrections > kSlowChords);
+      if (wasted) {
+        if (last_stale_wasted_) {
+          fresh_windows_ = fresh_run_;
+          fresh_run_ = std::min(2 * fresh_run_, kMaxFreshWindows);
+        }
+        last_stale_wasted_ = true;
+        refactor_next_ = true;
+      } else if (!refactored) {
+        last_stale_wasted_ = false;
+        fresh_run_ = kFreshWindows;
+      }
+    }
     factorization_age_ = refactored ? 1 : factorization_age_ + 1;
     if (!o.report.converged) {
       lu_.valid = false;
@@ -294,11 +306,19 @@ class WindowEngine {
   // the next window refactors at its start (Solve).
   int factorization_age_ = 0;
   bool refactor_next_ = false;
-  // Windows since the last refactor_next_, and the fresh starts left
-  // after it recurred (Solve).
-  static constexpr int kRecurrence = 2, kFreshWindows = 4;
-  int windows_since_young_failure_ = kRecurrence + 1;
+  // The fresh starts left, the length of the next run of them, and whether
+  // the last stale start was wasted (Solve).
+  static constexpr int kFreshWindows = 4, kMaxFreshWindows = 64;
   int fresh_windows_ = 0;
+  int fresh_run_ = kFreshWindows;
+  bool last_stale_wasted_ = false;
+  // A fresh start costs a factorization and 2 corrections; a factorization
+  // (assembly and LU) about 3d corrections (residual and substitution) in
+  // time, SBP84 in windows of 48: 3–4 for one coordinate (the pendulum's
+  // 5.5 chord corrections per window and fresh starts took the same time),
+  // 7 for two (Kepler e = 0.9, bench/window_algebra_bench: 14.5 µs against
+  // 2.0 µs).
+  static constexpr int kSlowChords = 2 + 3 * d;
   // The last window's corrected end state (the next window's initial data
   // unless a fallback intervened) and ω there; ω < 0: none yet.
   State handed_x_{}, handed_v_{};
