@@ -55,6 +55,16 @@ variational::MarchResult March(const NamedProblem& p, const std::string& method,
   return p.march(g, o, {});
 }
 
+// Pointwise evaluations of a march: a window evaluates the density's
+// derivatives at every node once per Newton or chord correction — at its
+// start (with the Jacobian when it factors afresh) and after every correction
+// but the converging one — and the predictor's Dormand–Prince steps six
+// equations of motion each.
+long long Evaluations(const variational::MarchResult& m,
+                      const std::string& method) {
+  return m.corrections * MethodWindow(method) + 6 * m.predictor_steps;
+}
+
 ExternalRun RunVariational(const std::string& method,
                            const std::string& problem,
                            const std::vector<double>& y0, double t_end,
@@ -104,11 +114,7 @@ ExternalRun RunVariational(const std::string& method,
   if (run.states.empty()) run.states.emplace_back();
   run.states.back() = state(m.end_position.data(), m.end_velocity.data());
   run.steps = long(m.points - 1);
-  // Residual evaluations: each Newton/chord step of a window costs one
-  // pointwise gradient per node, plus the first residual of each window;
-  // the predictor's Dormand–Prince steps six equations of motion each.
-  run.evaluations = (m.corrections + m.window_count) * MethodWindow(method) +
-                    6 * m.predictor_steps;
+  run.evaluations = Evaluations(m, method);
   run.iterations = m.corrections;
   return run;
 }
@@ -158,8 +164,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
                                exact.Energy(e.x, e.v)));
   }
   w.energy_error = de / e0;
-  w.evaluations = (m.corrections + m.window_count) * MethodWindow(method) +
-                  6 * m.predictor_steps;
+  w.evaluations = Evaluations(m, method);
   w.iterations = m.corrections;
   return w;
 }

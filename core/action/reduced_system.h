@@ -81,11 +81,10 @@ class ReducedSystem : public SystemBase<P, Real> {
     auto& v = scratch_.v;
     auto& w = scratch_.w;
     Paths(y, x, v);
-    const auto& D = dbar_.base();
     // H·∂f/∂x₋ into the node rows and the momentum-like w = ∂f/∂v₋, one
     // sweep over the nodes (gradient_sweep.h).
     GradientSweep<Real, d> sweep;
-    sweep.norm = &D;
+    sweep.norm = &dbar_.base();
     sweep.n = n_;
     sweep.rows = f + NodeRow(0, 0);
     for (int c = 0; c < d; ++c) {
@@ -95,23 +94,16 @@ class ReducedSystem : public SystemBase<P, Real> {
       sweep.w[c] = w[c].data();
     }
     SweepDiagonalGradient<Real>(problem_, sweep);
-    auto& dw = scratch_.dtw;
-    for (int c = 0; c < d; ++c) {
-      this->AddDbarTransposeHw(
-          w[c], dw, [&](int j) -> Real& { return f[NodeRow(j, c)]; });
-      f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
-      f[c] = x[c][0] - x_init_[c];
-      if (order_ == 2) {
-        // λ4·(last row of D) by hand rather than ForRow: ForRow's
-        // λ4·(c·(1/Δt)) rounds differently from (λ4·c)·(1/Δt) and would
-        // move last digits of every marched result.
-        const auto row = D.row(n_ - 1);
-        for (std::size_t k = 0; k < row.coeffs.size(); ++k)
-          f[NodeRow(row.first + static_cast<int>(k), c)] +=
-              y[Lambda4(c)] * row.coeffs[k] * D.inv_dt();
-        f[d + c] = D.ApplyRow(0, x[c].data()) - v_init_[c];
-      }
-    }
+    FinishResidual(y, f);
+  }
+
+  // The residual and the Jacobian at the same y, from one evaluation of the
+  // path and of the pointwise derivatives (∂f/∂m, the residual's, comes with
+  // ∂²f/∂m∂p): Newton's start on a window it factors afresh.
+  template <class Sink>
+  void ResidualAndJacobian(const Real* y, Real* f, Sink& sink) const {
+    Jacobian(y, sink, 0, n_, f);
+    FinishResidual(y, f);
   }
 
   // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
@@ -124,11 +116,18 @@ class ReducedSystem : public SystemBase<P, Real> {
   // Only the node terms of nodes [node_begin, node_end) (plus the multiplier
   // and constraint entries): the interior pattern repeats, so the ends and one
   // interior stretch reveal the band without the cost of a full assembly.
+  // With `rows` (all nodes), the residual's node terms too, as Residual's
+  // sweep writes them, for FinishResidual.
   template <class Sink>
-  void Jacobian(const Real* y, Sink& sink, int node_begin, int node_end) const {
+  void Jacobian(const Real* y, Sink& sink, int node_begin, int node_end,
+                Real* rows = nullptr) const {
     auto& x = scratch_.x;
     auto& v = scratch_.v;
     Paths(y, x, v);
+    auto& w = scratch_.w;
+    if (rows)
+      for (int c = 0; c < d; ++c) w[c].resize(n_);
+    const auto& D = dbar_.base();
     // The pointwise derivatives a block of nodes at a time (density.h).
     auto& points = scratch_.points;
     auto& derivatives = scratch_.derivatives;
@@ -151,9 +150,17 @@ class ReducedSystem : public SystemBase<P, Real> {
                                   derivatives.data());
       if (kron && begin == 0)
         mass = derivatives[0].dmp.template bottomRightCorner<d, d>();
-      for (int i = begin; i < end; ++i)
-        same_mass &= AddNodeJacobian(i, derivatives[i - begin].dmp,
-                                     kron ? &mass : nullptr, sink);
+      for (int i = begin; i < end; ++i) {
+        const auto& di = derivatives[i - begin];
+        same_mass &= AddNodeJacobian(i, di.dmp, kron ? &mass : nullptr, sink);
+        if (rows) {
+          const Real h = D.NormWeight(i);
+          for (int c = 0; c < d; ++c) {
+            rows[NodeRow(i, c)] = h * di.dm[c];
+            w[c][i] = di.dm[d + c];
+          }
+        }
+      }
     }
     // (A first-order density is linear in v: M = 0 and K adds nothing.)
     if (kron && (mass.array() != Real(0)).any()) AddMassBand(mass, sink);
@@ -172,6 +179,32 @@ class ReducedSystem : public SystemBase<P, Real> {
 
  private:
   using Block = Eigen::Matrix<Real, d, d>;
+
+  // The residual after its node terms (H·∂f/∂x₋ in the node rows, w =
+  // ∂f/∂v₋ in scratch, the path in scratch): D̄ᵀH w, the multipliers and
+  // the initial-data rows.
+  void FinishResidual(const Real* y, Real* f) const {
+    const auto& x = scratch_.x;
+    const auto& w = scratch_.w;
+    const auto& D = dbar_.base();
+    auto& dw = scratch_.dtw;
+    for (int c = 0; c < d; ++c) {
+      this->AddDbarTransposeHw(
+          w[c], dw, [&](int j) -> Real& { return f[NodeRow(j, c)]; });
+      f[NodeRow(n_ - 1, c)] += y[Lambda3(c)];
+      f[c] = x[c][0] - x_init_[c];
+      if (order_ == 2) {
+        // λ4·(last row of D) by hand rather than ForRow: ForRow's
+        // λ4·(c·(1/Δt)) rounds differently from (λ4·c)·(1/Δt) and would
+        // move last digits of every marched result.
+        const auto row = D.row(n_ - 1);
+        for (std::size_t k = 0; k < row.coeffs.size(); ++k)
+          f[NodeRow(row.first + static_cast<int>(k), c)] +=
+              y[Lambda4(c)] * row.coeffs[k] * D.inv_dt();
+        f[d + c] = D.ApplyRow(0, x[c].data()) - v_init_[c];
+      }
+    }
+  }
 
   // Node i's terms: rows (x₋, v₋) of node i, columns (x₊, v₊), both mapped
   // to path values through the same local map (v± = D̄x±, linear part);
