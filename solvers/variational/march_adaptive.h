@@ -7,6 +7,8 @@
 // kept). See docs/error_control.md.
 #pragma once
 
+#include <utility>
+
 #include "core/sbp/builder.h"
 #include "solvers/variational/march_core.h"
 
@@ -30,9 +32,12 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     while (t < grid_.t_end) {
       const Window w = NextWindow(t, dt, state);
       if (!CanContinue(t, w, rejected_in_row)) return false;
-      Attempt a = this->Solve(state, t, w.points, w.dt, false,
-                              PredictorTolerance(), false);
-      if (a.ok() && doubling) a = Doubled(state, t, a);
+      Attempt& a = this->Solve(attempt_, state, t, w.points, w.dt, false,
+                               PredictorTolerance(), false);
+      if (a.ok() && doubling) {
+        Doubled(state, t, a, fine_);
+        std::swap(attempt_, fine_);  // a (attempt_) is now the fine window
+      }
       const double err = a.ok() ? ErrorNorm(state, a) : NAN;
       if (!a.ok() || !(err <= 1)) {
         ++out_.rejected;
@@ -156,10 +161,10 @@ class AdaptiveMarch : public MarchCore<WindowT> {
 
   // SBP21: the window again at Δt/2; the difference of the two end states
   // estimates the error of the coarse one, and the fine one is kept.
-  Attempt Doubled(const InitialData& state, double t0, const Attempt& coarse) {
-    Attempt fine =
-        this->Solve(state, t0, 2 * coarse.points - 1, 0.5 * coarse.dt, false,
-                    PredictorTolerance(), false);
+  Attempt& Doubled(const InitialData& state, double t0, const Attempt& coarse,
+                   Attempt& fine) {
+    this->Solve(fine, state, t0, 2 * coarse.points - 1, 0.5 * coarse.dt, false,
+                PredictorTolerance(), false);
     if (!fine.ok()) return fine;
     const int d = d_;
     for (int c = 0; c < d; ++c) {
@@ -252,6 +257,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
 
   std::string last_why_;
   double last_residual_ = NAN;
+  // Every window's attempt and, with step doubling, its half-step
+  // solution's: their storage kept from window to window.
+  Attempt attempt_, fine_;
   // Since the last accepted window: the largest step rejected on
   // truncation, and whether a step below it was tried after round-off.
   double truncation_rejected_at_ = 0;

@@ -41,12 +41,12 @@ class MarchCore {
  protected:
   bool WantNodes() const { return bool(observer_) || options_.keep_trajectory; }
 
-  // The window from `state` at time t0; `uniform` adds the resolution check
-  // of window_solve.h.
-  Attempt Solve(const InitialData& state, double t0, int points, double dt,
-                bool fresh, Tolerance predictor, bool uniform) {
-    Attempt a = solver_.Solve(state, t0, points, dt, fresh, WantNodes(),
-                              predictor, uniform);
+  // The window from `state` at time t0, into `a` (returned); `uniform` adds
+  // the resolution check of window_solve.h.
+  Attempt& Solve(Attempt& a, const InitialData& state, double t0, int points,
+                 double dt, bool fresh, Tolerance predictor, bool uniform) {
+    solver_.Solve(a, state, t0, points, dt, fresh, WantNodes(), predictor,
+                  uniform);
     out_.predictor_steps += a.predictor_steps;
     out_.phases += a.phases;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
@@ -56,7 +56,7 @@ class MarchCore {
       // once more with a Jacobian of this window's own. (A solver that
       // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
-      return Solve(state, t0, points, dt, true, predictor, uniform);
+      return Solve(a, state, t0, points, dt, true, predictor, uniform);
     }
     return a;
   }

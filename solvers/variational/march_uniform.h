@@ -86,8 +86,11 @@ class UniformMarch : public MarchCore<WindowT> {
               bool last_of_march) {
     const double t0 = T(first), t1 = T(first + points - 1);
     const double dt = (t1 - t0) / double((points - 1) * refine_);
-    const Attempt a = this->Solve(state, t0, int((points - 1) * refine_ + 1),
-                                  dt, false, kPredictorTolerance, true);
+    // attempt_ is free again once this window is accepted or failed: the
+    // fallbacks below solve into it only after their last use of `a`.
+    const Attempt& a =
+        this->Solve(attempt_, state, t0, int((points - 1) * refine_ + 1), dt,
+                    false, kPredictorTolerance, true);
     if (a.ok()) {
       this->Accept(a, state, t0, refine_, last_of_march ? points : points - 1,
                    depth, 0.0, [&](long long i) { return T(first + i); });
@@ -127,7 +130,8 @@ class UniformMarch : public MarchCore<WindowT> {
                                      : grid_.t_start + dt * double(index);
   }
 
-  int refine_ = 1;  // solve grid = requested grid refined this many times
+  int refine_ = 1;   // solve grid = requested grid refined this many times
+  Attempt attempt_;  // every window's, its storage kept
 };
 
 }  // namespace vivp::variational::detail

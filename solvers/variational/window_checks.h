@@ -95,6 +95,31 @@ struct WindowAttempt {
   }
   double X(int i, int c) const { return x[std::size_t(i) * n + c]; }
   double V(int i, int c) const { return v[std::size_t(i) * n + c]; }
+
+  // As WindowAttempt(components), keeping the arrays' storage: a march
+  // solves every window into the same attempt (a fresh one allocated a
+  // dozen arrays per window).
+  void Reset(int components) {
+    n = components;
+    failure = WindowFailure::kNone;
+    why.clear();
+    residual = std::numeric_limits<double>::quiet_NaN();
+    points = 0;
+    dt = 0;
+    iterations = corrections = 0;
+    for (State* s : {&x_end, &v_end, &est_x, &est_v, &roundoff_v})
+      s->assign(std::size_t(components), 0.0);
+    end.position.clear();
+    end.momentum.clear();
+    end.velocity.clear();
+    end.position_error_estimate = end.velocity_error_estimate = 0;
+    x.clear();
+    v.clear();
+    data.clear();
+    distance = deviation = 0;
+    predictor_steps = 0;
+    phases = MarchPhases{};
+  }
 };
 
 // Three significant digits, for messages.

@@ -49,10 +49,12 @@ class WindowSolver {
   // chord steps on an earlier factorization; `nodes`: keep positions and
   // velocities. `predictor_tol` (absolute, relative) sets the predictor's
   // accuracy; `uniform` adds check 3.
-  Attempt Solve(const InitialData& initial, double t0, int points, double dt,
-                bool fresh, bool nodes, Tolerance predictor_tol, bool uniform) {
+  // The result goes into `a` (reset first), which is returned.
+  Attempt& Solve(Attempt& a, const InitialData& initial, double t0, int points,
+                 double dt, bool fresh, bool nodes, Tolerance predictor_tol,
+                 bool uniform) {
     const int d = window_.dim(), order = window_.order();
-    Attempt a(d);
+    a.Reset(d);
     a.points = points;
     a.dt = dt;
     x0_.assign(d, 0.0);
