@@ -17,6 +17,18 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
       inv_dt_(static_cast<Real>(points - 1) / (t_end - t_start)),
       half_width_(table.half_width()),
       bandwidth_(table.half_width()) {
+  // Every array sized before it is filled: a march builds an operator per
+  // window length, and growing them one push at a time took 77 allocations
+  // per SBP84 operator (callgrind).
+  weights_.reserve(table.norm_weights.size());
+  interior_.reserve(table.interior_stencil.size());
+  left_.reserve(std::size_t(table.boundary_rows()));
+  right_.reserve(std::size_t(table.boundary_rows()));
+  std::size_t closure_entries = 0;
+  for (const auto& src : table.boundary_block) closure_entries += src.size();
+  closure_start_.reserve(2 * std::size_t(table.boundary_rows()) + 1);
+  closure_col_.reserve(2 * closure_entries);
+  closure_coeff_.reserve(2 * closure_entries);
   for (const Rational& w : table.norm_weights) weights_.push_back(w.As<Real>());
   for (const Rational& c : table.interior_stencil)
     interior_.push_back(c.As<Real>());
@@ -32,6 +44,7 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
   for (int i = 0; i < table.boundary_rows(); ++i) {
     const auto& src = table.boundary_block[i];
     std::vector<Real> l, r(src.size());
+    l.reserve(src.size());
     const int len = static_cast<int>(src.size());
     for (int j = 0; j < len; ++j) {
       l.push_back(src[j].As<Real>());

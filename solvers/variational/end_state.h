@@ -45,10 +45,12 @@ Eigen::Matrix<Real, P::kDim, 1> VelocityOfMomentum(
 // (x_N, (Dx)_N) and the multipliers: λ3 = −p(T), and x_N + M⁻¹λ4 is the
 // quadrature of the integral form of x, one order better than x_N
 // (first-order systems: x_N + C⁻¹λ3, C the coefficient of ẋ).
+// Into `e`, whose arrays keep their storage (a march corrects every window's
+// end); CorrectEnd below returns a new one.
 template <class Real, class P>
-CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
-                              const Real* vn, const Real* lambda3,
-                              const Real* lambda4) {
+void CorrectEndInto(const P& problem, int order, const Real* xn, const Real* vn,
+                    const Real* lambda3, const Real* lambda4,
+                    CorrectedEnd<Real>& e) {
   constexpr int d = P::kDim;
   using Mat = Eigen::Matrix<Real, d, d>;
   using Vec = Eigen::Matrix<Real, d, 1>;
@@ -58,7 +60,10 @@ CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
     xv[c] = xn[c];
     vv[c] = vn[c];
   }
-  CorrectedEnd<Real> e;
+  e.position.clear();
+  e.momentum.clear();
+  e.velocity.clear();
+  e.position_error_estimate = e.velocity_error_estimate = 0;
   if (order == 2) {
     Vec l4;
     for (int c = 0; c < d; ++c) l4[c] = lambda4[c];
@@ -88,6 +93,14 @@ CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
     for (int c = 0; c < d; ++c) e.position.push_back(xv[c] + shift[c]);
     e.position_error_estimate = double(shift.cwiseAbs().maxCoeff());
   }
+}
+
+template <class Real, class P>
+CorrectedEnd<Real> CorrectEnd(const P& problem, int order, const Real* xn,
+                              const Real* vn, const Real* lambda3,
+                              const Real* lambda4) {
+  CorrectedEnd<Real> e;
+  CorrectEndInto(problem, order, xn, vn, lambda3, lambda4, e);
   return e;
 }
 

@@ -130,8 +130,8 @@ class PointWindow {
     if (newton.step_tolerance == 0)
       newton.step_tolerance = 4 * std::numeric_limits<double>::epsilon();
     const State lambda3 = Lambda3Start(n, px, pv);
-    const auto o =
-        e.Solve(x0, v0, px.data(), lambda3.data(), newton, fresh, nodes);
+    const auto& o = e.Solve(outcome_, x0, v0, px.data(), lambda3.data(), newton,
+                            fresh, nodes);
     a.iterations = o.report.iterations;
     a.corrections = o.report.corrections;
     a.phases.residual += o.report.phases.residual;
@@ -267,6 +267,8 @@ class PointWindow {
   double predictor_factor_ = 1.0;
   std::vector<std::unique_ptr<WindowEngine<P>>> engines_;
   const WindowEngine<P>* last_engine_ = nullptr;  // of the last solve
+  // Every window's engine outcome, its arrays' storage kept.
+  typename WindowEngine<P>::Outcome outcome_;
 };
 
 }  // namespace vivp::variational::detail

@@ -109,10 +109,15 @@ class WindowEngine {
   // refactors at the start instead of taking chord steps on the previous
   // window's factorization. On success the nodes are in x(i, c), and the
   // velocities D x in v(i, c) if `velocities` is set.
-  Outcome Solve(const State& x0, const State& v0, const double* guess,
-                const double* lambda3, const variational::NewtonOptions& newton,
-                bool fresh, bool velocities) {
-    Outcome o;
+  // The result goes into `o` (its arrays' storage kept), which is returned.
+  Outcome& Solve(Outcome& o, const State& x0, const State& v0,
+                 const double* guess, const double* lambda3,
+                 const variational::NewtonOptions& newton, bool fresh,
+                 bool velocities) {
+    o.report = {};
+    o.failure.clear();
+    o.split_helps = true;
+    o.seconds_end = 0;
     system_.SetInitial(x0, v0);
     const auto& D = dbar_.base();
     const int n = D.points();
@@ -213,8 +218,8 @@ class WindowEngine {
       l3[c] = y_[system_.Lambda3(c)];
       l4[c] = order() == 2 ? y_[system_.Lambda4(c)] : 0.0;
     }
-    o.end = CorrectEnd<double>(problem_, order(), xe[1], ve[1], l3,
-                               order() == 2 ? l4 : nullptr);
+    CorrectEndInto<double>(problem_, order(), xe[1], ve[1], l3,
+                           order() == 2 ? l4 : nullptr, o.end);
     for (int c = 0; c < d; ++c) {
       o.x_end[c] = xe[1][c];
       o.v_end[c] = ve[1][c];
