@@ -50,13 +50,18 @@ class MassBand {
     ++version_;
     // A window's K̃, computed by an earlier system of this thread (every
     // march builds its systems anew, one per window length). Only for the
-    // library's operators: their tables live as long as the program, so
-    // an address names one table.
+    // library's operators, whose tables live as long as the program, so
+    // that an address names one table; and only at the same step to the
+    // bit: K̃ is computed through H and D̄ at the step, which leaves their
+    // rounding in it, and one computed at another step made a march's
+    // result depend, at round-off, on the marches run before it.
     const bool shared = n <= kMaxRecentPoints && Registered(table_);
+    const Real inv_dt = D.inv_dt();
     auto& recent = Recent();
     if (shared)
       for (const Computed& c : recent)
-        if (c.table == table_ && c.n == n && c.sigma0 == sigma0_) {
+        if (c.table == table_ && c.n == n && c.sigma0 == sigma0_ &&
+            c.inv_dt == inv_dt) {
           entries_ = c.entries;
           return true;
         }
@@ -66,7 +71,6 @@ class MassBand {
     constexpr int kWidth = 2 * kHalf + 1;
     std::vector<Real> band(std::size_t(n) * kWidth, Real(0));
     std::vector<int> first(n, kWidth), last(n, -1);
-    const Real inv_dt = D.inv_dt();
     // Each weight Δt ∂v_i/∂x_a divided once per node, not once per pair
     // (the same bits; with the compression below reading only the columns a
     // node reached, 74 k → 55 k instructions for a window of 48 points under
@@ -103,7 +107,7 @@ class MassBand {
     entries_ = std::move(entries);
     if (shared) {
       if (recent.size() == kRecent) recent.erase(recent.begin());
-      recent.push_back({table_, n, sigma0_, entries_});
+      recent.push_back({table_, n, sigma0_, inv_dt, entries_});
     }
     return true;
   }
@@ -135,7 +139,7 @@ class MassBand {
   struct Computed {
     const void* table;
     int n;
-    Real sigma0;
+    Real sigma0, inv_dt;
     std::shared_ptr<const std::vector<Entry>> entries;
   };
   static bool Registered(const void* table) {
