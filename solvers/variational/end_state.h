@@ -60,10 +60,7 @@ void CorrectEndInto(const P& problem, int order, const Real* xn, const Real* vn,
     xv[c] = xn[c];
     vv[c] = vn[c];
   }
-  e.position.clear();
-  e.momentum.clear();
-  e.velocity.clear();
-  e.position_error_estimate = e.velocity_error_estimate = 0;
+  e.Clear();
   if (order == 2) {
     Vec l4;
     for (int c = 0; c < d; ++c) l4[c] = lambda4[c];

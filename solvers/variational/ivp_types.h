@@ -59,6 +59,14 @@ struct CorrectedEnd {
   std::vector<Real> velocity;  // M⁻¹(−λ3) (second order)
   double position_error_estimate = 0;  // |M⁻¹λ4|∞: estimates the error of x_N
   double velocity_error_estimate = 0;  // |(Dx)_N − M⁻¹(−λ3)|∞
+
+  // As a new one, its arrays' storage kept.
+  void Clear() {
+    position.clear();
+    momentum.clear();
+    velocity.clear();
+    position_error_estimate = velocity_error_estimate = 0;
+  }
 };
 
 template <class Real>

@@ -159,19 +159,19 @@ class AdaptiveMarch : public MarchCore<WindowT> {
             t.relative > 0 ? std::max(0.01 * t.relative, 1e-14) : 0.0};
   }
 
-  // SBP21: the window again at Δt/2; the difference of the two end states
-  // estimates the error of the coarse one, and the fine one is kept.
-  Attempt& Doubled(const InitialData& state, double t0, const Attempt& coarse,
-                   Attempt& fine) {
+  // SBP21: the window again at Δt/2, into `fine`; the difference of the two
+  // end states estimates the error of the coarse one, and the fine one is
+  // kept.
+  void Doubled(const InitialData& state, double t0, const Attempt& coarse,
+               Attempt& fine) {
     this->Solve(fine, state, t0, 2 * coarse.points - 1, 0.5 * coarse.dt, false,
                 PredictorTolerance(), false);
-    if (!fine.ok()) return fine;
+    if (!fine.ok()) return;
     const int d = d_;
     for (int c = 0; c < d; ++c) {
       fine.est_x[c] = std::abs(coarse.x_end[c] - fine.x_end[c]);
       fine.est_v[c] = std::abs(coarse.v_end[c] - fine.v_end[c]);
     }
-    return fine;
   }
 
   // max over components of estimate / (absolute + relative·|value|), the

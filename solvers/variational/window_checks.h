@@ -109,10 +109,7 @@ struct WindowAttempt {
     iterations = corrections = 0;
     for (State* s : {&x_end, &v_end, &est_x, &est_v, &roundoff_v})
       s->assign(std::size_t(components), 0.0);
-    end.position.clear();
-    end.momentum.clear();
-    end.velocity.clear();
-    end.position_error_estimate = end.velocity_error_estimate = 0;
+    end.Clear();
     x.clear();
     v.clear();
     data.clear();
