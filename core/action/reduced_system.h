@@ -28,6 +28,7 @@
 #include "core/action/gradient_sweep.h"
 #include "core/action/local_map.h"
 #include "core/action/mass_band.h"
+#include "core/action/mass_fill.h"
 #include "core/action/system_base.h"
 #include "core/linalg/banded.h"
 #include "core/sbp/regularized.h"
@@ -106,6 +107,21 @@ class ReducedSystem : public SystemBase<P, Real> {
     FinishResidual(y, f);
   }
 
+  // The Jacobian written over `band` whatever it held (no zeroing first),
+  // and with f the residual at the same y (ResidualAndJacobian). A uniform
+  // march's repeated assembly starts from a copy of its K ⊗ M band and adds
+  // the node terms to it, where zeroing the band and adding the fill after
+  // the node terms swept its storage twice (memset and AddSameBand, 4 % of a
+  // uniform SBP84 march of the anharmonic oscillator, perf). An entry with
+  // one node term gets the same bits either way (a + b = b + a); one that
+  // sums several could differ in its last bit (none does in the five
+  // problems of tests/reduced_jacobian_test).
+  void OverwriteJacobian(const Real* y, linalg::BandedMatrix<Real>& band,
+                         Real* f = nullptr) const {
+    Jacobian(y, band, 0, n_, f, true);
+    if (f) FinishResidual(y, f);
+  }
+
   // Feeds every Jacobian entry to sink.Add(row, col, value); entries at the
   // same position are summed by the sink.
   template <class Sink>
@@ -118,9 +134,11 @@ class ReducedSystem : public SystemBase<P, Real> {
   // interior stretch reveal the band without the cost of a full assembly.
   // With `rows` (all nodes), the residual's node terms too, as Residual's
   // sweep writes them, for FinishResidual.
+  // `overwrite` (a banded sink only): the sink's contents are replaced, not
+  // added to (OverwriteJacobian).
   template <class Sink>
   void Jacobian(const Real* y, Sink& sink, int node_begin, int node_end,
-                Real* rows = nullptr) const {
+                Real* rows = nullptr, bool overwrite = false) const {
     auto& x = scratch_.x;
     auto& v = scratch_.v;
     Paths(y, x, v);
@@ -142,14 +160,32 @@ class ReducedSystem : public SystemBase<P, Real> {
                       scratch_.mass_band.Prepare(dbar_);
     Block mass = Block::Zero();
     bool same_mass = true;
+    // Overwriting: the band starts as the K ⊗ M fill when this assembly
+    // repeats it (decided at the first node, whose vv block is M), else as
+    // zeros.
+    bool from_fill = false;
+    if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
+      if (overwrite && !kron) sink.SetZero();
+    }
     for (int begin = node_begin; begin < node_end; begin += kBlock) {
       const int end = std::min(node_end, begin + kBlock);
       for (int i = begin; i < end; ++i)
         NodePoint(x, v, i, &points[2 * d * (i - begin)]);
       DiagonalDerivativesAt<Real>(problem_, points.data(), end - begin,
                                   derivatives.data());
-      if (kron && begin == 0)
+      if (kron && begin == 0) {
         mass = derivatives[0].dmp.template bottomRightCorner<d, d>();
+        if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
+          if (overwrite) {
+            from_fill = scratch_.mass_fill.Repeats(scratch_.mass_band, mass,
+                                                   D.inv_dt(), sink);
+            if (from_fill)
+              sink.Assign(scratch_.mass_fill.fill());
+            else
+              sink.SetZero();
+          }
+        }
+      }
       for (int i = begin; i < end; ++i) {
         const auto& di = derivatives[i - begin];
         same_mass &= AddNodeJacobian(i, di.dmp, kron ? &mass : nullptr, sink);
@@ -163,7 +199,8 @@ class ReducedSystem : public SystemBase<P, Real> {
       }
     }
     // (A first-order density is linear in v: M = 0 and K adds nothing.)
-    if (kron && (mass.array() != Real(0)).any()) AddMassBand(mass, sink);
+    if (kron && (mass.array() != Real(0)).any())
+      AddMassBand(mass, sink, from_fill);
     if (kron) mass_constant_ = same_mass;
     for (int c = 0; c < d; ++c) {
       sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
@@ -255,75 +292,24 @@ class ReducedSystem : public SystemBase<P, Real> {
     return same;
   }
 
-  // K ⊗ M, K = K̃/Δt (mass_band.h): every entry's block. Into a banded
-  // matrix at storage offsets located once per operator and band (the
-  // checks and index arithmetic of AddBlock, per entry and assembly, were
-  // 7 % of a uniform SBP84 march of the anharmonic oscillator, callgrind);
-  // an entry outside the band, and any other sink, through AddBlock.
+  // K ⊗ M, K = K̃/Δt (mass_band.h): every entry's block, into a banded
+  // matrix through MassFill (mass_fill.h; `from_fill`: the band already
+  // holds its fill), into any other sink through AddBlock.
   template <class Sink>
-  void AddMassBand(const Block& mass, Sink& sink) const {
-    const auto& entries = scratch_.mass_band.Entries();
+  void AddMassBand(const Block& mass, Sink& sink,
+                   bool from_fill = false) const {
     const Real inv_dt = dbar_.base().inv_dt();
-    if constexpr (requires {
-                    sink.template BlockOffset<d>(0, 0);
-                    sink.template AddBlockAt<d>(0, Real(0), mass);
-                  }) {
-      auto& cache = scratch_.mass_offsets;
-      const std::array<long long, 4> key = {scratch_.mass_band.version(),
-                                            sink.size(), sink.lower(),
-                                            sink.upper()};
-      if (key != scratch_.mass_offsets_key) {
-        cache.resize(entries.size());
-        for (std::size_t e = 0; e < entries.size(); ++e)
-          cache[e] = sink.template BlockOffset<d>(NodeRow(entries[e].row, 0),
-                                                  X(entries[e].column, 0));
-        scratch_.mass_offsets_key = key;
-      }
-      // A march on a uniform grid assembles K ⊗ M with the same step and
-      // mass at every refactorization: from the second such assembly on,
-      // the in-band blocks come from a band holding their products, added
-      // in one sweep over its storage (the same products added in the same
-      // places: the same bits). 6 % of a uniform SBP84 march of the anharmonic
-      // oscillator went into the blocks one by one (callgrind).
-      if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
-        auto& fill = scratch_.mass_fill;
-        const bool repeat = key == scratch_.mass_fill_key &&
-                            inv_dt == scratch_.mass_fill_inv_dt &&
-                            mass == scratch_.mass_fill_mass;
-        if (repeat) {
-          auto& outside = scratch_.mass_fill_outside;
-          if (!scratch_.mass_fill_ready) {
-            fill = Sink(sink.size(), sink.lower(), sink.upper());
-            outside.clear();
-            for (std::size_t e = 0; e < entries.size(); ++e)
-              if (cache[e] >= 0)
-                fill.template AddBlockAt<d>(cache[e], inv_dt * entries[e].value,
-                                            mass);
-              else
-                outside.push_back(e);
-            scratch_.mass_fill_ready = true;
-          }
-          sink.AddSameBand(fill);
-          for (const std::size_t e : outside)
-            AddBlock(entries[e].row, entries[e].column,
-                     Block(inv_dt * entries[e].value * mass), sink);
-          return;
-        }
-        scratch_.mass_fill_key = key;
-        scratch_.mass_fill_inv_dt = inv_dt;
-        scratch_.mass_fill_mass = mass;
-        scratch_.mass_fill_ready = false;
-      }
-      for (std::size_t e = 0; e < entries.size(); ++e) {
-        const Real scale = inv_dt * entries[e].value;
-        if (cache[e] >= 0)
-          sink.template AddBlockAt<d>(cache[e], scale, mass);
-        else
-          AddBlock(entries[e].row, entries[e].column, Block(scale * mass),
-                   sink);
-      }
+    if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
+      scratch_.mass_fill.Add(
+          scratch_.mass_band, mass, inv_dt, sink, from_fill,
+          [&](int a, int b) {
+            return sink.template BlockOffset<d>(NodeRow(a, 0), X(b, 0));
+          },
+          [&](int a, int b, const Block& block) {
+            AddBlock(a, b, block, sink);
+          });
     } else {
-      for (const auto& [a, b, k] : entries)
+      for (const auto& [a, b, k] : scratch_.mass_band.Entries())
         AddBlock(a, b, Block(inv_dt * k * mass), sink);
     }
   }
@@ -361,18 +347,7 @@ class ReducedSystem : public SystemBase<P, Real> {
     std::vector<Real> points;  // 2d per node
     std::vector<Diagonal<Real, d>> derivatives;
     MassBand<Real> mass_band;
-    // Where each entry of mass_band goes in the banded Jacobian, for the
-    // band of mass_offsets_key (mass_band's version, n, kl, ku).
-    std::vector<std::ptrdiff_t> mass_offsets;
-    std::array<long long, 4> mass_offsets_key = {-1, -1, -1, -1};
-    // The in-band blocks of K ⊗ M at the step and mass of the last
-    // assembly, once a second assembly repeated them (AddMassBand).
-    linalg::BandedMatrix<Real> mass_fill;
-    std::array<long long, 4> mass_fill_key = {-1, -1, -1, -1};
-    Real mass_fill_inv_dt = Real(0);
-    Block mass_fill_mass = Block::Zero();
-    bool mass_fill_ready = false;
-    std::vector<std::size_t> mass_fill_outside;  // entries outside the band
+    MassFill<Real, d> mass_fill;  // K ⊗ M into a banded Jacobian
   };
   mutable Scratch scratch_;
   // Whether the last whole assembly found one vv block at every node.

@@ -48,6 +48,14 @@ class BandedMatrix {
     for (std::size_t i = 0; i < size; ++i) a[i] += c[i];
   }
 
+  // A = B for B of the same size and band: the whole storage, LU's fill-in
+  // rows included (zero in B), so A needs no zeroing first.
+  void Assign(const BandedMatrix& b) {
+    if (b.n_ != n_ || b.kl_ != kl_ || b.ku_ != ku_)
+      throw std::logic_error("Assign: different sizes or bands");
+    std::copy(b.data_.begin(), b.data_.end(), data_.begin());
+  }
+
   // A(i, j) += v. Entries outside the declared band are a programming error.
   // Assembly calls this for every entry of every node (a fifth of a marched
   // window's instructions, callgrind), so the check is two unsigned

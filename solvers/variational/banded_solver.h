@@ -46,10 +46,16 @@ struct BandedSolver {
     jac = linalg::BandedMatrix<Real>(n, probe.kl, probe.ku);
   }
   int probed_points = -1;  // the nodes of the probed band
+  // A System that writes its Jacobian over the band (reduced_system.h,
+  // OverwriteJacobian) spares the zeroing.
   template <class System>
   void Assemble(const System& system, const Real* y) {
-    jac.SetZero();
-    system.Jacobian(y, jac);
+    if constexpr (requires { system.OverwriteJacobian(y, jac); }) {
+      system.OverwriteJacobian(y, jac);
+    } else {
+      jac.SetZero();
+      system.Jacobian(y, jac);
+    }
   }
   // The Jacobian and, into f, the residual at the same y, for a System that
   // evaluates both in one pass (reduced_system.h).
@@ -59,8 +65,12 @@ struct BandedSolver {
     system.ResidualAndJacobian(y, f, jac);
   }
   {
-    jac.SetZero();
-    system.ResidualAndJacobian(y, f, jac);
+    if constexpr (requires { system.OverwriteJacobian(y, jac, f); }) {
+      system.OverwriteJacobian(y, jac, f);
+    } else {
+      jac.SetZero();
+      system.ResidualAndJacobian(y, f, jac);
+    }
   }
   bool Factorize() {
     ++factorizations;
