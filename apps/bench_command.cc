@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "apps/command.h"
+#include "core/sbp/builder.h"
 #include "studies/bench_problems.h"
 
 namespace vivp::apps {
@@ -23,6 +24,7 @@ struct BenchOptions {
   std::string steps;    // comma-separated; empty: the default sweep
   long long repeats = 5;
   double budget = 1.0;
+  long long slab_points = 0;  // 0: the solver's default window
   std::string json;
   bool force = false;
 };
@@ -112,11 +114,35 @@ int RunBench(const BenchOptions& o) {
       if (!studies::IsAdaptive(m) && k != std::floor(k))
         throw UsageError("--steps: step counts must be whole numbers for " + m +
                          ", got " + std::to_string(k));
+  if (o.slab_points > 0) {
+    bool variational = false;
+    for (const auto& m : methods) {
+      if (!studies::IsVariationalMethod(m)) continue;
+      variational = true;
+      const std::string op = studies::VariationalOperator(m);
+      const int minimum = sbp::Table(op).min_points;
+      if (o.slab_points < minimum)
+        throw UsageError(
+            "--slab-points " + std::to_string(o.slab_points) +
+            " is below the minimum window of " + op + " (" +
+            std::to_string(minimum) +
+            " points); use --slab-points >= " + std::to_string(minimum));
+    }
+    if (!variational)
+      throw UsageError(
+          "--slab-points sets the window of the variational methods, and "
+          "none is selected; add one to --methods (e.g. "
+          "variational_sbp84_uniform) or drop --slab-points");
+  }
+  studies::SetVariationalWindowPoints(o.slab_points);
   if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
 
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   human << "# " << problem->description << "; reference: " << problem->reference
-        << "; median of " << o.repeats << " runs\n";
+        << "; median of " << o.repeats << " runs";
+  if (o.slab_points > 0)
+    human << "; variational windows of " << o.slab_points << " points";
+  human << '\n';
   human << "# method                  steps       tol      error  max|dH|/H "
            " max|dI|    seconds      evals  it/st status\n";
   nlohmann::json rows = nlohmann::json::array();
@@ -141,6 +167,7 @@ int RunBench(const BenchOptions& o) {
                               {"t_end", problem->t_end},
                               {"invariants", problem->invariant_names},
                               {"repeats", o.repeats},
+                              {"slab_points", o.slab_points},
                               {"rows", rows}};
     WriteJson(o.json, j, 2);
   }
@@ -169,6 +196,11 @@ Runner AddBenchCommand(CLI::App& app) {
                   "stop a sweep after a run slower than this many seconds")
       ->check(FiniteNumber())
       ->capture_default_str();
+  cmd->add_option("--slab-points", o->slab_points,
+                  "points per window of the variational methods' marches "
+                  "(default: the solver's, 48 on a uniform grid, 24 under "
+                  "error control)")
+      ->check(WholeNumberAtLeast(2, "at least 2"));
   cmd->add_option("--json", o->json, "write the rows as JSON (- for stdout)");
   cmd->add_flag("--force", o->force, "overwrite an existing JSON file");
   return [o] {

@@ -43,6 +43,16 @@ const std::vector<BenchProblem>& BenchProblems();
 // Called by BenchProblems(); idempotent.
 void RegisterVariationalMethods();
 
+// The points per window of the variational methods' marches from now on (0:
+// the solver's default, 48 on a uniform grid and 24 under error control):
+// the window length is part of a variational configuration, as the step is.
+// Throws std::invalid_argument for a negative count.
+void SetVariationalWindowPoints(long long points);
+// Whether `method` is one of the variational methods (its operator the name
+// after "variational_", e.g. sbp84 for variational_sbp84_uniform).
+bool IsVariationalMethod(const std::string& method);
+std::string VariationalOperator(const std::string& method);
+
 // The damped oscillator of Rothkopf & Nordström 2023 (not Hamiltonian): the
 // variational solver's four operators only. Part of BenchProblems().
 BenchProblem DampedBenchProblem();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,10 +30,17 @@ std::string Operator(const std::string& method) {
 }
 bool Adaptive(const std::string& method) { return !method.ends_with(kUniform); }
 
-// The window of a configuration's march: the default of Newton's march on a
-// uniform grid or under error control. March sets it, and the evaluation
-// counts below use it.
+// The window SetVariationalWindowPoints chose; 0: the solver's default.
+long long& WindowOverride() {
+  static long long points = 0;
+  return points;
+}
+
+// The window of a configuration's march: the one chosen, or the default of
+// Newton's march on a uniform grid or under error control. March sets it,
+// and the evaluation counts below use it.
 long long MethodWindow(const std::string& method) {
+  if (WindowOverride() > 0) return WindowOverride();
   return variational::DefaultWindowPoints(variational::Path::kReducedNewton,
                                           Operator(method), Adaptive(method));
 }
@@ -170,6 +178,23 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
 }
 
 }  // namespace
+
+void SetVariationalWindowPoints(long long points) {
+  if (points < 0)
+    throw std::invalid_argument(
+        "window points must be 0 (the default) or "
+        "positive, got " +
+        std::to_string(points));
+  WindowOverride() = points;
+}
+
+bool IsVariationalMethod(const std::string& method) {
+  return method.starts_with("variational_");
+}
+
+std::string VariationalOperator(const std::string& method) {
+  return Operator(method);
+}
 
 BenchProblem DampedBenchProblem() {
   BenchProblem b;

@@ -44,6 +44,14 @@ BOOST_AUTO_TEST_CASE(BenchBadInput_ExitsTwoWithOneLineNamingValidValues) {
       {"bench --problem kepler --steps 10.5 --methods rk4", "whole numbers"},
       {"bench --problem kepler --repeats 2", "at least 5"},
       {"bench --problem kepler --budget inf", "finite"},
+      {"bench --problem anharmonic --methods rk4 --slab-points 96",
+       "none is selected"},
+      {"bench --problem anharmonic --methods variational_sbp84_uniform "
+       "--slab-points 10",
+       "minimum window of sbp84 (16 points)"},
+      {"bench --problem anharmonic --methods variational_sbp84_uniform "
+       "--slab-points 1",
+       "at least 2"},
   };
   for (const auto& c : cases) {
     const Run r = Vivp(c.args);
@@ -89,4 +97,33 @@ BOOST_AUTO_TEST_CASE(BenchUnstableConfiguration_IsAStatusNotACrash) {
   BOOST_TEST(j["rows"][0]["status"] == "unstable");
   BOOST_TEST(j["rows"][0]["error"].is_null());
   BOOST_TEST(j["rows"][1]["status"] == "ok");
+}
+
+// --slab-points reaches the variational methods' marches: windows of 96
+// instead of the default 48 change the discrete solution (another end
+// error) and the evaluation count, and the JSON records the length.
+BOOST_AUTO_TEST_CASE(BenchSlabPoints_SetsTheVariationalWindow) {
+  const std::string run =
+      "bench --problem anharmonic --methods variational_sbp84_uniform "
+      "--steps 384 --json -";
+  const Run standard = Vivp(run, false);
+  const Run longer = Vivp(run + " --slab-points 96", false);
+  BOOST_REQUIRE(standard.status == 0);
+  BOOST_REQUIRE(longer.status == 0);
+  const auto a = nlohmann::json::parse(standard.output);
+  const auto b = nlohmann::json::parse(longer.output);
+  BOOST_TEST(a.at("slab_points") == 0);
+  BOOST_TEST(b.at("slab_points") == 96);
+  const auto& ra = a.at("rows").at(0);
+  const auto& rb = b.at("rows").at(0);
+  BOOST_TEST(ra.at("status") == "ok");
+  BOOST_TEST(rb.at("status") == "ok");
+  // Both converge (SBP84 at 384 steps over 10 time units ends within 1e-3
+  // of the exact solution; measured 3.8e-4 and 2.0e-4) to different
+  // discrete solutions.
+  BOOST_TEST(ra.at("error").get<double>() < 1e-3);
+  BOOST_TEST(rb.at("error").get<double>() < 1e-3);
+  BOOST_TEST(ra.at("error").get<double>() != rb.at("error").get<double>());
+  BOOST_TEST(ra.at("evaluations").get<long>() !=
+             rb.at("evaluations").get<long>());
 }
