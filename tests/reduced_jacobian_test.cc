@@ -115,8 +115,8 @@ Errors WorstErrors(const P& problem, const std::string& op, int order) {
     vivp::linalg::BandedMatrix<double> fused(s.size(), probe.kl, probe.ku);
     fused.SetZero();
     s.ResidualAndJacobian(y.data(), fused_f.data(), fused);
-    // From the second assembly on, a constant mass's K ⊗ M comes from the
-    // system's fill: the band starts as its copy, not as zeros.
+    // A constant mass's K ⊗ M is written over the band first (the node
+    // terms added to it); any other density's band is zeroed first.
     vivp::linalg::BandedMatrix<double> over(s.size(), probe.kl, probe.ku);
     std::fill(over.data(),
               over.data() + std::size_t(over.leading_dimension()) * over.size(),

@@ -108,14 +108,13 @@ class ReducedSystem : public SystemBase<P, Real> {
   }
 
   // The Jacobian written over `band` whatever it held (no zeroing first),
-  // and with f the residual at the same y (ResidualAndJacobian). A uniform
-  // march's repeated assembly starts from a copy of its K ⊗ M band and adds
-  // the node terms to it, where zeroing the band and adding the fill after
-  // the node terms swept its storage twice (memset and AddSameBand, 4 % of a
-  // uniform SBP84 march of the anharmonic oscillator, perf). An entry with
-  // one node term gets the same bits either way (a + b = b + a); one that
-  // sums several could differ in its last bit (none does in the five
-  // problems of tests/reduced_jacobian_test).
+  // and with f the residual at the same y (ResidualAndJacobian): the band
+  // starts as K ⊗ M, one sweep over its storage (mass_fill.h), and the node
+  // terms are added to it. Zeroing it and adding K ⊗ M after the node terms
+  // swept the storage twice (4 % of a uniform SBP84 march of the anharmonic
+  // oscillator, perf). An entry with one node term gets the same bits either
+  // way (a + b = b + a); one that sums several could differ in its last bit
+  // (none does in the five problems of tests/reduced_jacobian_test).
   void OverwriteJacobian(const Real* y, linalg::BandedMatrix<Real>& band,
                          Real* f = nullptr) const {
     Jacobian(y, band, 0, n_, f, true);
@@ -160,10 +159,9 @@ class ReducedSystem : public SystemBase<P, Real> {
                       scratch_.mass_band.Prepare(dbar_);
     Block mass = Block::Zero();
     bool same_mass = true;
-    // Overwriting: the band starts as the K ⊗ M fill when this assembly
-    // repeats it (decided at the first node, whose vv block is M), else as
-    // zeros.
-    bool from_fill = false;
+    // Overwriting: the band starts as K ⊗ M (decided at the first node,
+    // whose vv block is M) or as zeros.
+    bool mass_added = false;
     if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
       if (overwrite && !kron) sink.SetZero();
     }
@@ -177,10 +175,9 @@ class ReducedSystem : public SystemBase<P, Real> {
         mass = derivatives[0].dmp.template bottomRightCorner<d, d>();
         if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
           if (overwrite) {
-            from_fill = scratch_.mass_fill.Repeats(scratch_.mass_band, mass,
-                                                   D.inv_dt(), sink);
-            if (from_fill)
-              sink.Assign(scratch_.mass_fill.fill());
+            mass_added = (mass.array() != Real(0)).any();
+            if (mass_added)
+              AddMassBand(mass, sink, true);
             else
               sink.SetZero();
           }
@@ -199,8 +196,8 @@ class ReducedSystem : public SystemBase<P, Real> {
       }
     }
     // (A first-order density is linear in v: M = 0 and K adds nothing.)
-    if (kron && (mass.array() != Real(0)).any())
-      AddMassBand(mass, sink, from_fill);
+    if (kron && !mass_added && (mass.array() != Real(0)).any())
+      AddMassBand(mass, sink);
     if (kron) mass_constant_ = same_mass;
     for (int c = 0; c < d; ++c) {
       sink.Add(NodeRow(n_ - 1, c), Lambda3(c), Real(1));
@@ -292,22 +289,22 @@ class ReducedSystem : public SystemBase<P, Real> {
     return same;
   }
 
-  // K ⊗ M, K = K̃/Δt (mass_band.h): every entry's block, into a banded
-  // matrix through MassFill (mass_fill.h; `from_fill`: the band already
-  // holds its fill), into any other sink through AddBlock.
+  // K ⊗ M, K = K̃/Δt (mass_band.h): into a banded matrix from MassFill's
+  // K̃ ⊗ M scaled by 1/Δt (mass_fill.h; `overwrite`: written over the
+  // band), into any other sink block by block through AddBlock.
   template <class Sink>
   void AddMassBand(const Block& mass, Sink& sink,
-                   bool from_fill = false) const {
+                   bool overwrite = false) const {
     const Real inv_dt = dbar_.base().inv_dt();
     if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
-      scratch_.mass_fill.Add(
-          scratch_.mass_band, mass, inv_dt, sink, from_fill,
-          [&](int a, int b) {
-            return sink.template BlockOffset<d>(NodeRow(a, 0), X(b, 0));
-          },
-          [&](int a, int b, const Block& block) {
-            AddBlock(a, b, block, sink);
-          });
+      auto& fill = scratch_.mass_fill;
+      fill.Prepare(scratch_.mass_band, mass, sink, [&](int a, int b) {
+        return sink.template BlockOffset<d>(NodeRow(a, 0), X(b, 0));
+      });
+      fill.Scaled(scratch_.mass_band, inv_dt, sink, overwrite,
+                  [&](int a, int b, const Block& block) {
+                    AddBlock(a, b, block, sink);
+                  });
     } else {
       for (const auto& [a, b, k] : scratch_.mass_band.Entries())
         AddBlock(a, b, Block(inv_dt * k * mass), sink);
@@ -347,7 +344,7 @@ class ReducedSystem : public SystemBase<P, Real> {
     std::vector<Real> points;  // 2d per node
     std::vector<Diagonal<Real, d>> derivatives;
     MassBand<Real> mass_band;
-    MassFill<Real, d> mass_fill;  // K ⊗ M into a banded Jacobian
+    MassFill<Real, d> mass_fill;  // K̃ ⊗ M in a banded Jacobian's storage
   };
   mutable Scratch scratch_;
   // Whether the last whole assembly found one vv block at every node.

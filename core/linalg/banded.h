@@ -36,24 +36,27 @@ class BandedMatrix {
 
   void SetZero() { std::fill(data_.begin(), data_.end(), Real(0)); }
 
-  // A += B for B of the same size and band: the whole storage in one
-  // sweep, so an entry of A that B does not touch gains an exact zero (and
-  // LU's fill-in rows, zero in both before a factorization, stay zero).
-  void AddSameBand(const BandedMatrix& b) {
-    if (b.n_ != n_ || b.kl_ != kl_ || b.ku_ != ku_)
-      throw std::logic_error("AddSameBand: different sizes or bands");
+  // A = s·B and A += s·B for B of the same size and band: the whole storage
+  // in one sweep, LU's fill-in rows included (zero in B), so A needs no
+  // zeroing before the first.
+  void AssignScaled(Real s, const BandedMatrix& b) {
+    CheckSameBand(b);
     Real* __restrict a = data_.data();
     const Real* __restrict c = b.data_.data();
     const std::size_t size = data_.size();
-    for (std::size_t i = 0; i < size; ++i) a[i] += c[i];
+    for (std::size_t i = 0; i < size; ++i) a[i] = s * c[i];
   }
-
-  // A = B for B of the same size and band: the whole storage, LU's fill-in
-  // rows included (zero in B), so A needs no zeroing first.
-  void Assign(const BandedMatrix& b) {
-    if (b.n_ != n_ || b.kl_ != kl_ || b.ku_ != ku_)
-      throw std::logic_error("Assign: different sizes or bands");
-    std::copy(b.data_.begin(), b.data_.end(), data_.begin());
+  void AddScaled(Real s, const BandedMatrix& b) {
+    CheckSameBand(b);
+    Real* __restrict a = data_.data();
+    const Real* __restrict c = b.data_.data();
+    const std::size_t size = data_.size();
+    // The product formed before it is added, as AddBlockAt does (no fused
+    // multiply–add where the target has one).
+    for (std::size_t i = 0; i < size; ++i) {
+      const Real p = s * c[i];
+      a[i] += p;
+    }
   }
 
   // A(i, j) += v. Entries outside the declared band are a programming error.
@@ -139,6 +142,10 @@ class BandedMatrix {
     return static_cast<std::size_t>(j) * ld_ + (kl_ + ku_ + i - j);
   }
 
+  void CheckSameBand(const BandedMatrix& b) const {
+    if (b.n_ != n_ || b.kl_ != kl_ || b.ku_ != ku_)
+      throw std::logic_error("banded matrices of different sizes or bands");
+  }
   [[noreturn, gnu::noinline, gnu::cold]] void OutsideBand(int i, int j) const {
     throw std::logic_error("banded entry (" + std::to_string(i) + ", " +
                            std::to_string(j) + ") outside band kl=" +
