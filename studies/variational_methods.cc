@@ -182,8 +182,7 @@ WorkPoint MeasureDamped(const std::string& method, double t_end, double knob,
 void SetVariationalWindowPoints(long long points) {
   if (points < 0)
     throw std::invalid_argument(
-        "window points must be 0 (the default) or "
-        "positive, got " +
+        "window points must be 0 (the default) or positive, got " +
         std::to_string(points));
   WindowOverride() = points;
 }

@@ -41,12 +41,12 @@ class MassFill {
     const auto& entries = k.Entries();
     unit_ = Band(band.size(), band.lower(), band.upper());
     outside_.clear();
-    for (std::size_t e = 0; e < entries.size(); ++e) {
-      const std::ptrdiff_t at = offset(entries[e].row, entries[e].column);
+    for (const auto& [row, column, value] : entries) {
+      const std::ptrdiff_t at = offset(row, column);
       if (at >= 0)
-        unit_.template AddBlockAt<d>(at, entries[e].value, mass);
+        unit_.template AddBlockAt<d>(at, value, mass);
       else
-        outside_.push_back(e);
+        outside_.push_back({row, column, Block(value * mass)});
     }
     key_ = key;
     mass_ = mass;
@@ -56,16 +56,14 @@ class MassFill {
   // band += it; then the blocks outside the band through
   // add_outside(node row, node column, block).
   template <class AddOutside>
-  void Scaled(const MassBand<Real>& k, Real inv_dt, Band& band, bool overwrite,
+  void Scaled(Real inv_dt, Band& band, bool overwrite,
               const AddOutside& add_outside) const {
     if (overwrite)
       band.AssignScaled(inv_dt, unit_);
     else
       band.AddScaled(inv_dt, unit_);
-    const auto& entries = k.Entries();
-    for (const std::size_t e : outside_)
-      add_outside(entries[e].row, entries[e].column,
-                  Block(inv_dt * (entries[e].value * mass_)));
+    for (const Outside& o : outside_)
+      add_outside(o.row, o.column, Block(inv_dt * o.block));
   }
 
  private:
@@ -73,7 +71,12 @@ class MassFill {
   Band unit_;
   std::array<long long, 4> key_ = {-1, -1, -1, -1};
   Block mass_ = Block::Zero();
-  std::vector<std::size_t> outside_;  // entries outside the band
+  // K̃ ⊗ M's blocks outside the band (node row, node column, block).
+  struct Outside {
+    int row, column;
+    Block block;
+  };
+  std::vector<Outside> outside_;
 };
 
 }  // namespace vivp::action

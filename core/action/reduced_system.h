@@ -301,7 +301,7 @@ class ReducedSystem : public SystemBase<P, Real> {
       fill.Prepare(scratch_.mass_band, mass, sink, [&](int a, int b) {
         return sink.template BlockOffset<d>(NodeRow(a, 0), X(b, 0));
       });
-      fill.Scaled(scratch_.mass_band, inv_dt, sink, overwrite,
+      fill.Scaled(inv_dt, sink, overwrite,
                   [&](int a, int b, const Block& block) {
                     AddBlock(a, b, block, sink);
                   });
