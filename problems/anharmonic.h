@@ -12,6 +12,7 @@ namespace vivp::problems {
 
 struct Anharmonic {
   static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   double kappa = 20.0;
   double x0 = 1.0;
   double v0 = 0.3;

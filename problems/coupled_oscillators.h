@@ -11,6 +11,7 @@ namespace vivp::problems {
 
 struct CoupledOscillators {
   static constexpr int kDim = 2;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   double k = 1.0;
   double c = 0.5;
   std::array<double, 2> x0 = {1.0, 0.0};

@@ -8,6 +8,7 @@ namespace vivp::problems {
 
 struct FreeFall {
   static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   double m = 1.0;
   double g = 1.0;
   double x0 = 1.0;

@@ -13,6 +13,7 @@ namespace vivp::problems {
 
 struct HarmonicOscillator {
   static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   static constexpr bool kSeparable = true;
   double omega = 1.0;
   std::array<double, 1> q0 = {1.0};

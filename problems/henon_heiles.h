@@ -12,6 +12,7 @@ namespace vivp::problems {
 
 struct HenonHeiles {
   static constexpr int kDim = 2;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   static constexpr bool kSeparable = true;
   std::array<double, 2> q0 = {0.18, 0.18};
   std::array<double, 2> p0 = {0.18, 0.18};

@@ -12,6 +12,7 @@ namespace vivp::problems {
 
 struct Kepler {
   static constexpr int kDim = 2;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   static constexpr bool kSeparable = true;
   double e = 0.6;
 

@@ -14,6 +14,7 @@ namespace vivp::problems {
 
 struct Pendulum {
   static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;  // L = ½ẋᵀMẋ − V(x)
   static constexpr bool kSeparable = true;
   std::array<double, 1> q0 = {0.0};
   std::array<double, 1> p0 = {1.0};

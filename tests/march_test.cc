@@ -5,11 +5,13 @@
 #include <cmath>
 #include <random>
 
+#include "core/action/erased_problem.h"
 #include "core/linalg/fit.h"
 #include "problems/anharmonic.h"
 #include "problems/damped_oscillator.h"
 #include "problems/kepler.h"
 #include "solvers/variational/banded_lu.h"
+#include "solvers/variational/solve.h"
 #include "studies/registry.h"
 
 // LAPACK's banded LU, the reference of BandedSubstitution_EqualsLapack.
@@ -183,6 +185,34 @@ BOOST_AUTO_TEST_CASE(WindowBelowOperatorMinimum_IsRejected) {
         return std::string(e.what()).find("below the minimum of sbp42 (8)") !=
                std::string::npos;
       });
+}
+
+// Declares a constant mass it does not have (∂²L/∂ẋ² = 1 + x²): the march
+// must stop with an error that names the declaration, whichever check sees
+// it first, not use M⁻¹ ∂L/∂x in its predictor and go on.
+struct MisdeclaredMass {
+  static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return T(0.5) * (T(1) + x[0] * x[0]) * v[0] * v[0] - T(0.5) * x[0] * x[0];
+  }
+};
+
+BOOST_DATA_TEST_CASE(WrongConstantMassDeclaration_FailsByName,
+                     bdata::make({0.0, 0.3}), v0) {
+  const auto problem = vivp::action::Erase(MisdeclaredMass{});
+  std::string message;
+  try {
+    const MarchResult r =
+        Solve(problem, {.x = {1.0}, .v = {v0}},
+              {.op = "sbp42", .points = 200, .t_end = 4.0}, MarchOptions{});
+    message = r.status.converged ? "converged" : r.status.reason;
+  } catch (const std::invalid_argument& e) {
+    message = e.what();
+  }
+  BOOST_TEST_MESSAGE("v0 = " << v0 << ": " << message);
+  BOOST_TEST(message.find("kConstantMass") != std::string::npos, message);
 }
 
 BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {

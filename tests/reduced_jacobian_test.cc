@@ -8,8 +8,10 @@
 // and a first-order density (M = 0). Each in the band storage the solver
 // factors and through the entry-by-entry sink, three assemblies in a row.
 // Also the two shortcuts beside the assembly: K ⊗ M added at band offsets
-// located once (BandedMatrix::BlockOffset), and the Euler–Lagrange
-// acceleration from the velocity rows of the Hessian alone.
+// located once (BandedMatrix::BlockOffset), the Euler–Lagrange
+// acceleration from the velocity rows of the Hessian alone, and from
+// M⁻¹ ∂L/∂x for a Lagrangian that declares kConstantMass (with the checks
+// that catch a wrong declaration).
 #define BOOST_TEST_MODULE reduced_jacobian
 #include <Eigen/Dense>
 #include <algorithm>
@@ -18,19 +20,24 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/action/erased_problem.h"
 #include "core/action/euler_lagrange.h"
 #include "core/action/reduced_system.h"
 #include "core/linalg/banded.h"
 #include "core/sbp/builder.h"
 #include "problems/anharmonic.h"
+#include "problems/coupled_oscillators.h"
 #include "problems/cyclotron.h"
 #include "problems/damped_oscillator.h"
 #include "problems/exponential.h"
+#include "problems/free_fall.h"
 #include "problems/kepler.h"
+#include "problems/pendulum.h"
 
 namespace {
 
@@ -235,4 +242,98 @@ BOOST_AUTO_TEST_CASE(acceleration_from_velocity_rows_equals_whole_hessian) {
   CheckAcceleration(vivp::problems::Cyclotron{}, x2, v2);
   const double x1[] = {0.83}, v1[] = {-0.4};
   CheckAcceleration(vivp::problems::Anharmonic{}, x1, v1);
+}
+
+// L = ½ẋᵀMẋ − V(x) with a full, not unit, mass matrix.
+struct FullMass {
+  static constexpr int kDim = 2;
+  static constexpr bool kConstantMass = true;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return T(0.5) *
+               (T(2.0) * v[0] * v[0] + v[0] * v[1] + T(1.5) * v[1] * v[1]) -
+           T(0.25) * x[0] * x[0] * x[0] * x[0] - x[0] * x[1] * x[1];
+  }
+};
+
+// Declared wrongly: ∂²L/∂x∂ẋ = x ≠ 0, and (below) a mass that varies.
+struct CoupledDeclared {
+  static constexpr int kDim = 1;
+  static constexpr bool kConstantMass = true;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return T(0.5) * v[0] * v[0] + T(0.5) * x[0] * x[0] * v[0];
+  }
+};
+struct VaryingDeclared : VaryingMass {
+  static constexpr bool kConstantMass = true;
+};
+
+// M⁻¹ ∂L/∂x (Accelerator) against G_vv⁻¹(g_x − G_vx ẋ) (Acceleration): the
+// same up to the rounding of M⁻¹ against a solve with M, and the same
+// through the compiled model (action::Erase) as from the type itself.
+template <class P>
+void CheckConstantMass(const P& problem, const double* x, const double* v) {
+  constexpr int d = P::kDim;
+  BOOST_TEST(vivp::action::ConstantMass(problem));
+  vivp::action::Accelerator<P> fast(problem);
+  const auto erased = vivp::action::Erase(problem);
+  vivp::action::Accelerator<vivp::action::ErasedProblem<d>> fast_erased(erased);
+  BOOST_TEST(vivp::action::ConstantMass(erased));
+  for (int k = 0; k < 3; ++k) {
+    double xk[d], vk[d];
+    for (int c = 0; c < d; ++c) {
+      xk[c] = x[c] * (1.0 + 0.3 * k);
+      vk[c] = v[c] - 0.2 * k;
+    }
+    const auto a = fast(xk, vk);
+    const auto general = vivp::action::Acceleration(problem, xk, vk);
+    const auto b = fast_erased(xk, vk);
+    for (int c = 0; c < d; ++c) {
+      BOOST_TEST(std::abs(a[c] - general[c]) <=
+                 4e-16 * general.cwiseAbs().maxCoeff());
+      BOOST_TEST(a[c] == b[c]);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(constant_mass_acceleration_equals_the_general_one) {
+  const double x2[] = {0.37, -1.21}, v2[] = {0.8, 2.3};
+  CheckConstantMass(vivp::problems::Kepler{.e = 0.9}, x2, v2);
+  CheckConstantMass(vivp::problems::CoupledOscillators{}, x2, v2);
+  CheckConstantMass(FullMass{}, x2, v2);
+  const double x1[] = {0.83}, v1[] = {-0.4};
+  CheckConstantMass(vivp::problems::Anharmonic{}, x1, v1);
+  CheckConstantMass(vivp::problems::Pendulum{}, x1, v1);
+  CheckConstantMass(vivp::problems::FreeFall{.m = 2.5, .g = 9.81}, x1, v1);
+  // Not declared: the cyclotron (x–ẋ coupling), damped (Λ), first order.
+  BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Cyclotron{}));
+  BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::DampedOscillator{}));
+  BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Exponential{}));
+}
+
+bool NamesTheDeclaration(const std::invalid_argument& e) {
+  return std::string(e.what()).find("kConstantMass") != std::string::npos;
+}
+
+// A wrong declaration fails by name: where the acceleration first sees
+// ∂²L/∂x∂ẋ ≠ 0, and where an assembly sees ∂²L/∂ẋ² vary from node to node
+// (at ẋ = 0 the varying mass has no x–ẋ term for the first check to see).
+BOOST_AUTO_TEST_CASE(a_wrong_constant_mass_declaration_is_an_error) {
+  const double x[] = {0.8}, v[] = {0.3}, rest[] = {0.0};
+  vivp::action::Accelerator<CoupledDeclared> coupled(CoupledDeclared{});
+  BOOST_CHECK_EXCEPTION(coupled(x, v), std::invalid_argument,
+                        NamesTheDeclaration);
+  vivp::action::Accelerator<VaryingDeclared> varying(VaryingDeclared{});
+  BOOST_TEST(std::isfinite(varying(x, rest)[0]));
+  const int n = 24;
+  const vivp::sbp::RegularizedOperator<double> dbar(
+      vivp::sbp::MakeOperator<double>("sbp42", n, 0.0, 1.0), -1.0);
+  const ReducedSystem<VaryingDeclared, double> s(VaryingDeclared{}, dbar, {0.8},
+                                                 {0.0}, 2);
+  std::vector<double> y(s.size(), 0.0);
+  for (int i = 0; i < n; ++i) y[s.X(i, 0)] = 0.8 - 0.3 * i / double(n);
+  vivp::linalg::BandwidthProbe probe;
+  BOOST_CHECK_EXCEPTION(s.Jacobian(y.data(), probe), std::invalid_argument,
+                        NamesTheDeclaration);
 }

@@ -14,6 +14,7 @@
 //   template <class T> T Lambda(const T* x1, const T* v1,
 //                               const T* x2, const T* v2) const;  // Λ
 //   static constexpr int kOrder = 1;  // or 2; otherwise detected from ∂²L/∂v²
+//   static constexpr bool kConstantMass = true;  // L = ½vᵀMv + c·v − V(x)
 //
 // Warnings:
 //  1. operator() and Lambda are called with nested automatic-differentiation
@@ -52,6 +53,20 @@ constexpr int DeclaredOrder() {
     return 0;
 }
 
+// kConstantMass declares L = ½vᵀMv + c·v − V(x) with M and c constant:
+// ∂²L/∂v² = M and ∂²L/∂x∂v = 0 at every point, so that the equation of
+// motion is ẍ = M⁻¹ ∂L/∂x (euler_lagrange.h, ConstantMassAcceleration) and
+// needs only first derivatives over x. Ignored with Λ or kOrder = 1. The
+// solvers check it wherever they evaluate ∂²L (reduced_system.h) and fail
+// with an error naming it when it does not hold.
+template <class P>
+constexpr bool DeclaredConstantMass() {
+  if constexpr (requires { P::kConstantMass; })
+    return P::kConstantMass && DeclaredOrder<P>() != 1 && !HasLambda<P>;
+  else
+    return false;
+}
+
 // A problem whose pointwise derivatives were compiled once, elsewhere
 // (erased_problem.h): every function below asks its model instead of
 // differentiating it, so the solvers compile once per dimension, not once per
@@ -60,6 +75,16 @@ template <class P>
 concept Precompiled = requires(const P& p) {
   p.pointwise();
 };
+
+// Whether P's Lagrangian declares kConstantMass (for a precompiled problem,
+// whether its model's does).
+template <class P>
+bool ConstantMass(const P& problem) {
+  if constexpr (Precompiled<P>)
+    return problem.pointwise().ConstantMass();
+  else
+    return DeclaredConstantMass<P>();
+}
 
 // f = L(x1, v1) − L(x2, v2) + Λ(x1, v1, x2, v2): the density of eq. (34).
 template <class P, class T>

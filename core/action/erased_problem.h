@@ -83,6 +83,10 @@ class PointwiseModel {
   // ẍ(x, ẋ) of a second-order problem (euler_lagrange.h).
   virtual Eigen::Matrix<double, d, 1> Acceleration(const double* x,
                                                    const double* v) const = 0;
+  // Whether L declares kConstantMass (density.h), and ∂L/∂x alone.
+  virtual bool ConstantMass() const = 0;
+  virtual Eigen::Matrix<double, d, 1> PositionGradient(
+      const double* x, const double* v) const = 0;
 };
 
 // The model of one problem type: each function differentiates P as
@@ -143,6 +147,11 @@ class ModelOf final : public PointwiseModel<P::kDim> {
   Eigen::Matrix<double, d, 1> Acceleration(const double* x,
                                            const double* v) const override {
     return action::Acceleration(problem_, x, v);
+  }
+  bool ConstantMass() const override { return action::ConstantMass(problem_); }
+  Eigen::Matrix<double, d, 1> PositionGradient(const double* x,
+                                               const double* v) const override {
+    return action::PositionGradient(problem_, x, v);
   }
 
   const P& problem() const { return problem_; }
@@ -243,6 +252,14 @@ class SumModel final : public PointwiseModel<d> {
       p[d + c] = v[c];
     }
     return AccelerationFrom<d>(DiagonalDerivatives(p), v);
+  }
+  // ½vᵀ(M_a + M_b)v − V_a − V_b when both parts are of that form.
+  bool ConstantMass() const override {
+    return a_->ConstantMass() && b_->ConstantMass();
+  }
+  Eigen::Matrix<double, d, 1> PositionGradient(const double* x,
+                                               const double* v) const override {
+    return a_->PositionGradient(x, v) + b_->PositionGradient(x, v);
   }
 
  private:

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -171,6 +172,7 @@ class ReducedSystem : public SystemBase<P, Real> {
         NodePoint(x, v, i, &points[2 * d * (i - begin)]);
       DiagonalDerivativesAt<Real>(problem_, points.data(), end - begin,
                                   derivatives.data());
+      if (declared_mass_) CheckConstantMass(derivatives.data(), begin, end);
       if (kron && begin == 0) {
         mass = derivatives[0].dmp.template bottomRightCorner<d, d>();
         if constexpr (std::is_same_v<Sink, linalg::BandedMatrix<Real>>) {
@@ -349,6 +351,36 @@ class ReducedSystem : public SystemBase<P, Real> {
   mutable Scratch scratch_;
   // Whether the last whole assembly found one vv block at every node.
   mutable bool mass_constant_ = true;
+
+  // A Lagrangian that declares kConstantMass (density.h) has ∂²L/∂ẋ² = M and
+  // ∂²L/∂x∂ẋ = 0 at every node, M the block of the first node this system
+  // evaluated: checked here, where ∇²L is evaluated anyway, so that a wrong
+  // declaration fails with its name instead of steering the predictor
+  // (euler_lagrange.h, Accelerator).
+  const bool declared_mass_ = ConstantMass(problem_);
+  mutable bool have_declared_mass_ = false;
+  mutable Block declared_mass_block_ = Block::Zero();
+  void CheckConstantMass(const Diagonal<Real, d>* derivatives, int begin,
+                         int end) const {
+    if (!have_declared_mass_) {
+      declared_mass_block_ =
+          derivatives[0].dmp.template bottomRightCorner<d, d>();
+      have_declared_mass_ = true;
+    }
+    for (int i = begin; i < end; ++i) {
+      const auto& h = derivatives[i - begin].dmp;
+      if ((h.template bottomRightCorner<d, d>().array() ==
+           declared_mass_block_.array())
+              .all() &&
+          (h.template topRightCorner<d, d>().array() == Real(0)).all() &&
+          (h.template bottomLeftCorner<d, d>().array() == Real(0)).all())
+        continue;
+      throw std::invalid_argument(
+          "the Lagrangian declares kConstantMass, but ∂²L/∂ẋ² is not the "
+          "same at every node or ∂²L/∂x∂ẋ ≠ 0: it is not ½ẋᵀMẋ + c·ẋ − V(x); "
+          "remove kConstantMass");
+    }
+  }
 };
 
 }  // namespace vivp::action

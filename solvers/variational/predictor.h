@@ -112,7 +112,8 @@ class Predictor {
   static constexpr int d = P::kDim;
   using State = std::array<double, 2 * d>;
 
-  Predictor(const P& problem, int order) : problem_(problem), order_(order) {}
+  Predictor(const P& problem, int order)
+      : problem_(problem), order_(order), acceleration_(problem) {}
 
   // Integrates from (x0, v0) at τ = 0 to the times tau[0 … n) (tau[0] = 0,
   // increasing) and writes positions and velocities node-major into x and v
@@ -148,8 +149,19 @@ class Predictor {
   }
 
  private:
-  void Rhs(const State& y, State& dy) const {
-    action::EquationsOfMotion(problem_, order_, y.data(), dy.data(), velocity_);
+  // ẍ through the Accelerator (M⁻¹ ∂L/∂x for a constant mass), ẋ = f(x)
+  // as EquationsOfMotion solves it.
+  void Rhs(const State& y, State& dy) {
+    if (order_ != 2) {
+      action::EquationsOfMotion(problem_, order_, y.data(), dy.data(),
+                                velocity_);
+      return;
+    }
+    const auto a = acceleration_(y.data(), y.data() + d);
+    for (int c = 0; c < d; ++c) {
+      dy[c] = y[d + c];
+      dy[d + c] = a[c];
+    }
   }
 
   void Store(const State& s, int i, double* x, double* v, double& scale_x,
@@ -166,6 +178,7 @@ class Predictor {
 
   const P& problem_;
   int order_;
+  action::Accelerator<P> acceleration_;
   double step_ = 0;  // last accepted step, the next run's first
   mutable action::StateVector<P> velocity_ = action::StateVector<P>::Zero();
 };
