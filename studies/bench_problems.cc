@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 namespace vivp::studies {
 
@@ -75,7 +76,13 @@ std::vector<WorkPoint> Sweep(const BenchProblem& p, const std::string& method,
                              int repeats, double budget_seconds, double floor) {
   std::vector<WorkPoint> rows;
   if (IsAdaptive(method)) {
-    for (double tol = 1e-3; tol >= 1e-13; tol /= 10) {
+    // 10⁻³ … 10⁻¹³ as the decimal literals read (tol /= 10 drifts by an ulp
+    // from 10⁻⁶ on, and an adaptive march's end error below 10⁻⁹ moves with
+    // the last bit of its tolerance: Kepler e = 0.9, SBP84, 9.8e-11 at
+    // 1e-7 and 3.3e-12 at 1e-7 + 1 ulp, the same 5520 nodes), so that a
+    // sweep's row and `--steps 1e-7` are the same march.
+    for (int k = 3; k <= 13; ++k) {
+      const double tol = std::stod("1e-" + std::to_string(k));
       rows.push_back(p.measure(method, tol, repeats));
       if (rows.back().seconds > budget_seconds) break;
     }

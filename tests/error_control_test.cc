@@ -10,6 +10,7 @@
 
 #include "core/linalg/fit.h"
 #include "problems/kepler.h"
+#include "studies/bench_problems.h"
 #include "studies/registry.h"
 
 using namespace vivp;
@@ -133,4 +134,21 @@ BOOST_DATA_TEST_CASE(ToleranceSweep_AchievedErrorTracksTheTolerance,
   // Tighter tolerances take more nodes.
   for (std::size_t i = 1; i < s.rows.size(); ++i)
     BOOST_TEST(s.rows[i].points > s.rows[i - 1].points);
+}
+
+// `vivp bench`'s default sweep of an adaptive method runs the tolerances
+// 1e-3 … 1e-13 as those literals read, so that each of its rows is the march
+// `--steps TOL` runs (below 1e-9 an end error moves with the tolerance's last
+// bit).
+BOOST_AUTO_TEST_CASE(bench_sweep_tolerances_are_the_decimal_literals) {
+  std::vector<double> asked;
+  BenchProblem p;
+  p.measure = [&](const std::string&, double tol, int) {
+    asked.push_back(tol);
+    return WorkPoint{};
+  };
+  Sweep(p, "odeint_dopri5", 5, 1e9);
+  const std::vector<double> expected = {1e-3, 1e-4,  1e-5,  1e-6,  1e-7, 1e-8,
+                                        1e-9, 1e-10, 1e-11, 1e-12, 1e-13};
+  BOOST_TEST(asked == expected, boost::test_tools::per_element());
 }
