@@ -57,6 +57,30 @@ struct Composed {
     return sum;
   }
 
+  // L = ½ẋᵀMẋ − V(x) with M constant (action::ConstantMass): a kinetic
+  // effect, no Λ, and every other effect a function of x alone. The
+  // predictor then integrates ẍ = M⁻¹ ∂L/∂x (core/action/euler_lagrange.h).
+  bool ConstantMass() const {
+    bool kinetic = false;
+    for (const Effect& e : effects) {
+      const bool ok = std::visit(
+          [&](const auto& t) {
+            using E = std::remove_cvref_t<decltype(t)>;
+            if constexpr (HasLambdaTerm<E>) {
+              return false;
+            } else if constexpr (std::is_same_v<E, effects::Kinetic>) {
+              kinetic = true;
+              return true;
+            } else {
+              return E::kDepends == action::Depends::kPosition;
+            }
+          },
+          e);
+      if (!ok) return false;
+    }
+    return kinetic;
+  }
+
   template <class T>
   T Lambda(const T* x1, const T* v1, const T* x2, const T* v2) const {
     T sum = T(0.0);

@@ -31,6 +31,7 @@
 #include "core/linalg/banded.h"
 #include "core/sbp/builder.h"
 #include "problems/anharmonic.h"
+#include "problems/composed.h"
 #include "problems/coupled_oscillators.h"
 #include "problems/cyclotron.h"
 #include "problems/damped_oscillator.h"
@@ -306,6 +307,20 @@ BOOST_AUTO_TEST_CASE(constant_mass_acceleration_equals_the_general_one) {
   CheckConstantMass(vivp::problems::Anharmonic{}, x1, v1);
   CheckConstantMass(vivp::problems::Pendulum{}, x1, v1);
   CheckConstantMass(vivp::problems::FreeFall{.m = 2.5, .g = 9.81}, x1, v1);
+  // Composed at run time: a kinetic effect and potentials say so (a full
+  // mass matrix in two coordinates); with a Λ effect they do not.
+  namespace fx = vivp::problems::effects;
+  CheckConstantMass(
+      vivp::problems::Composed<1>{{fx::Kinetic{2.5, {}}, fx::Quartic{3.0}}}, x1,
+      v1);
+  CheckConstantMass(
+      vivp::problems::Composed<2>{
+          {fx::Kinetic{1.0, {2.0, 0.5, 0.5, 1.5}}, fx::Central{1.0}}},
+      x2, v2);
+  BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Composed<1>{
+      {fx::Kinetic{}, fx::Spring{}, fx::Damping{}}}));
+  BOOST_TEST(
+      !vivp::action::ConstantMass(vivp::problems::Composed<1>{{fx::Spring{}}}));
   // Not declared: the cyclotron (x–ẋ coupling), damped (Λ), first order.
   BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Cyclotron{}));
   BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::DampedOscillator{}));

@@ -77,11 +77,14 @@ concept Precompiled = requires(const P& p) {
 };
 
 // Whether P's Lagrangian declares kConstantMass (for a precompiled problem,
-// whether its model's does).
+// whether its model's does; a problem composed at run time may say so through
+// a member ConstantMass(), problems/composed.h).
 template <class P>
 bool ConstantMass(const P& problem) {
   if constexpr (Precompiled<P>)
     return problem.pointwise().ConstantMass();
+  else if constexpr (requires { problem.ConstantMass(); })
+    return problem.ConstantMass();
   else
     return DeclaredConstantMass<P>();
 }
