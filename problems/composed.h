@@ -57,28 +57,28 @@ struct Composed {
     return sum;
   }
 
-  // L = ½ẋᵀMẋ − V(x) with M constant (action::ConstantMass): a kinetic
-  // effect, no Λ, and every other effect a function of x alone. The
-  // predictor then integrates ẍ = M⁻¹ ∂L/∂x (core/action/euler_lagrange.h).
+  // L = ½ẋᵀMẋ − V(x) with M constant (action::ConstantMass): no Λ, and
+  // every effect a kinetic energy or a function of x alone. M may be zero
+  // (potentials only): such a composition is a part of a sum whose other
+  // part carries the kinetic energy (a scene's registered Lagrangian,
+  // action::SumModel). The predictor of a second-order march then integrates
+  // ẍ = M⁻¹ ∂L/∂x (core/action/euler_lagrange.h).
   bool ConstantMass() const {
-    bool kinetic = false;
     for (const Effect& e : effects) {
       const bool ok = std::visit(
-          [&](const auto& t) {
+          [](const auto& t) {
             using E = std::remove_cvref_t<decltype(t)>;
-            if constexpr (HasLambdaTerm<E>) {
+            if constexpr (HasLambdaTerm<E>)
               return false;
-            } else if constexpr (std::is_same_v<E, effects::Kinetic>) {
-              kinetic = true;
+            else if constexpr (std::is_same_v<E, effects::Kinetic>)
               return true;
-            } else {
+            else
               return E::kDepends == action::Depends::kPosition;
-            }
           },
           e);
       if (!ok) return false;
     }
-    return kinetic;
+    return true;
   }
 
   template <class T>

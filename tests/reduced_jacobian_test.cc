@@ -307,7 +307,7 @@ BOOST_AUTO_TEST_CASE(constant_mass_acceleration_equals_the_general_one) {
   CheckConstantMass(vivp::problems::Anharmonic{}, x1, v1);
   CheckConstantMass(vivp::problems::Pendulum{}, x1, v1);
   CheckConstantMass(vivp::problems::FreeFall{.m = 2.5, .g = 9.81}, x1, v1);
-  // Composed at run time: a kinetic effect and potentials say so (a full
+  // Composed at run time: kinetic effects and potentials say so (a full
   // mass matrix in two coordinates); with a Λ effect they do not.
   namespace fx = vivp::problems::effects;
   CheckConstantMass(
@@ -319,8 +319,18 @@ BOOST_AUTO_TEST_CASE(constant_mass_acceleration_equals_the_general_one) {
       x2, v2);
   BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Composed<1>{
       {fx::Kinetic{}, fx::Spring{}, fx::Damping{}}}));
+  // Potentials alone (M = 0): a part of a sum with a kinetic energy, as a
+  // scene adds its effects to a registered Lagrangian.
+  const auto sum =
+      vivp::action::Erase(vivp::problems::Anharmonic{}) +
+      vivp::action::Erase(vivp::problems::Composed<1>{{fx::Spring{2.0, {}}}});
+  BOOST_TEST(vivp::action::ConstantMass(sum));
+  vivp::action::Accelerator<vivp::action::ErasedProblem<1>> summed(sum);
+  const double a_sum = summed(x1, v1)[0];
+  const double a_general = vivp::action::Acceleration(sum, x1, v1)[0];
+  BOOST_TEST(std::abs(a_sum - a_general) <= 4e-16 * std::abs(a_general));
   BOOST_TEST(
-      !vivp::action::ConstantMass(vivp::problems::Composed<1>{{fx::Spring{}}}));
+      vivp::action::ConstantMass(vivp::problems::Composed<1>{{fx::Spring{}}}));
   // Not declared: the cyclotron (x–ẋ coupling), damped (Λ), first order.
   BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::Cyclotron{}));
   BOOST_TEST(!vivp::action::ConstantMass(vivp::problems::DampedOscillator{}));

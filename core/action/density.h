@@ -55,7 +55,7 @@ constexpr int DeclaredOrder() {
 
 // kConstantMass declares L = ½vᵀMv + c·v − V(x) with M and c constant:
 // ∂²L/∂v² = M and ∂²L/∂x∂v = 0 at every point, so that the equation of
-// motion is ẍ = M⁻¹ ∂L/∂x (euler_lagrange.h, ConstantMassAcceleration) and
+// motion is ẍ = M⁻¹ ∂L/∂x (euler_lagrange.h, Accelerator) and
 // needs only first derivatives over x. Ignored with Λ or kOrder = 1. The
 // solvers check it wherever they evaluate ∂²L (reduced_system.h) and fail
 // with an error naming it when it does not hold.
