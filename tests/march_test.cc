@@ -215,6 +215,28 @@ BOOST_DATA_TEST_CASE(WrongConstantMassDeclaration_FailsByName,
   BOOST_TEST(message.find("kConstantMass") != std::string::npos, message);
 }
 
+// A path that does not check the declaration (Ceres' LM) takes no shortcut:
+// the misdeclared Lagrangian marches as its undeclared twin, to the bit.
+struct UndeclaredMass {
+  static constexpr int kDim = 1;
+  template <class T>
+  T operator()(const T* x, const T* v) const {
+    return MisdeclaredMass{}(x, v);
+  }
+};
+
+BOOST_AUTO_TEST_CASE(UncheckedPath_IgnoresTheConstantMassDeclaration) {
+  MarchOptions o;
+  o.solve.path = Path::kCeresLm;
+  const Grid g{.op = "sbp42", .points = 120, .t_end = 2.0};
+  const InitialData s{.x = {1.0}, .v = {0.0}};
+  const MarchResult declared = Solve(action::Erase(MisdeclaredMass{}), s, g, o);
+  const MarchResult twin = Solve(action::Erase(UndeclaredMass{}), s, g, o);
+  BOOST_TEST(declared.status.converged, declared.status.reason);
+  BOOST_TEST(declared.end_position[0] == twin.end_position[0]);
+  BOOST_TEST(declared.end_velocity[0] == twin.end_velocity[0]);
+}
+
 BOOST_AUTO_TEST_CASE(LongHorizon_DampedTo10000AndKepler100Periods) {
   // Proves: marching stays bounded and on the invariants over long runs.
   // Damped oscillator to T = 10⁴ (≈2250 periods) at Δt = 0.1: the energy

@@ -101,12 +101,15 @@ StateVector<P> PositionGradient(const P& problem, const double* x,
 // kept: first derivatives over x instead of the velocity rows of ∇²L and a
 // d × d solve at every call (the right-hand side of a march's predictor:
 // about 9 % of a uniform SBP84 march of the anharmonic oscillator, perf).
+// `constant_mass` false: Acceleration at every call whatever L declares (a
+// caller that has no check of the declaration along its path).
 template <class P>
 class Accelerator {
  public:
   static constexpr int d = P::kDim;
-  explicit Accelerator(const P& problem)
-      : problem_(problem), constant_mass_(ConstantMass(problem)) {}
+  explicit Accelerator(const P& problem, bool constant_mass = true)
+      : problem_(problem),
+        constant_mass_(constant_mass && ConstantMass(problem)) {}
 
   StateVector<P> operator()(const double* x, const double* v) {
     if (!constant_mass_) return Acceleration(problem_, x, v);

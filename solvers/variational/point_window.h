@@ -36,7 +36,9 @@ class PointWindow {
         sigma0_(sigma0),
         options_(options),
         order_(order),
-        predictor_(problem, order) {}
+        // The shortcut of a constant mass only where the window engine
+        // solves, whose assembly checks the declaration (options_ is set).
+        predictor_(problem, order, EngineApplies()) {}
 
   int dim() const { return d; }
   int order() const { return order_; }

@@ -112,8 +112,13 @@ class Predictor {
   static constexpr int d = P::kDim;
   using State = std::array<double, 2 * d>;
 
-  Predictor(const P& problem, int order)
-      : problem_(problem), order_(order), acceleration_(problem) {}
+  // `constant_mass`: take ẍ = M⁻¹ ∂L/∂x when L declares kConstantMass
+  // (action::Accelerator), for a caller whose solves check the declaration
+  // at every node (the reduced system's assembly, reduced_system.h).
+  Predictor(const P& problem, int order, bool constant_mass = false)
+      : problem_(problem),
+        order_(order),
+        acceleration_(problem, constant_mass) {}
 
   // Integrates from (x0, v0) at τ = 0 to the times tau[0 … n) (tau[0] = 0,
   // increasing) and writes positions and velocities node-major into x and v
