@@ -118,19 +118,14 @@ class Accelerator {
   }
 
  private:
-  // M from ∇²L at (x, ẋ), where ∂²L/∂x∂ẋ must vanish too; std::
-  // invalid_argument when the declaration visibly does not hold there or M
-  // is singular.
+  // M from ∇²L at (x, ẋ) (LagrangianHessian), where ∂²L/∂x∂ẋ must vanish
+  // too; std::invalid_argument when the declaration visibly does not hold
+  // there or M is singular.
   void LearnMass(const double* x, const double* v) {
-    double p[2 * d];
-    for (int c = 0; c < d; ++c) {
-      p[c] = x[c];
-      p[d + c] = v[c];
-    }
-    const auto g = DiagonalDerivatives<double>(problem_, p);
+    const auto h = LagrangianHessian(problem_, x, v);
     const Eigen::Matrix<double, d, d> mass =
-        g.dmp.template bottomRightCorner<d, d>();
-    if (!(g.dmp.template bottomLeftCorner<d, d>().array() == 0.0).all())
+        h.template bottomRightCorner<d, d>();
+    if (!(h.template bottomLeftCorner<d, d>().array() == 0.0).all())
       throw std::invalid_argument(
           "the Lagrangian declares kConstantMass, but ∂²L/∂x∂ẋ ≠ 0 at its "
           "first point: it is not ½ẋᵀMẋ + c·ẋ − V(x); remove kConstantMass");
