@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -130,11 +131,20 @@ BOOST_AUTO_TEST_CASE(BadScene_ExitsTwoWithOneLineAndLeavesNothingBehind) {
   const Run r =
       Vivp("run --quiet " + scene.string() + " --out " + out.string());
   BOOST_TEST(r.status == 2);
-  BOOST_TEST(r.err == scene.string() +
-                          ":4:8: unknown effect type 'kinetc' (did you mean "
-                          "'kinetic'?); expected one of kinetic, gravity, "
-                          "spring, quartic, pendulum, central, gaussian_well, "
-                          "chain, damping, growth, cyclotron\n");
+  // The built-in effects, then the Lagrangians registered in lagrangians/
+  // (none of the project's own are effects; one a user adds as the README
+  // shows is listed after them, and must not fail this test).
+  const std::string expected = scene.string() +
+                               ":4:8: unknown effect type 'kinetc' (did you "
+                               "mean 'kinetic'?); expected one of kinetic, "
+                               "gravity, spring, quartic, pendulum, central, "
+                               "gaussian_well, chain, damping, growth, "
+                               "cyclotron";
+  BOOST_TEST(r.err.substr(0, expected.size()) == expected);
+  BOOST_TEST(
+      std::regex_match(r.err.substr(std::min(expected.size(), r.err.size())),
+                       std::regex("(, [a-z][a-z0-9_]*)*\n")),
+      r.err);
   BOOST_TEST(!fs::exists(out));
   for (const auto& e : fs::directory_iterator(s.dir))
     BOOST_TEST(e.path().filename().string().find("partial") ==
