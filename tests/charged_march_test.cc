@@ -376,12 +376,15 @@ BOOST_AUTO_TEST_CASE(orders_in_time_and_space) {
     BOOST_TEST(std::abs(p_phi - expected) < 0.3);
     BOOST_TEST(std::abs(p_e - expected) < 0.3);
   }
-  // In Δx: 32, 64, 128 points against 256, SBP42 at Δt = 0.0125 (its error
+  // In Δx: 32 and 64 points against 256, SBP42 at Δt = 0.0125 (its error
   // is below the spatial one), |φ| at the coarse points and E averaged over
-  // each coarse link.
+  // each coarse link. (128 points, half the reference's spacing, measured
+  // 8.4e-4 and 1.6e-3, a ratio of 5 to 64 points: the reference's own error
+  // is in it, so it does not enter the slope, and at a fifth of this case's
+  // time it is not marched.)
   const End fine = EndOf(256, "sbp42", 0.0125);
   std::vector<double> phi_err, e_err;
-  for (int n : {32, 64, 128}) {
+  for (int n : {32, 64}) {
     const End e = EndOf(n, "sbp42", 0.0125);
     phi_err.push_back(Apart(e, fine, false));
     e_err.push_back(Apart(e, fine, true));
@@ -389,10 +392,9 @@ BOOST_AUTO_TEST_CASE(orders_in_time_and_space) {
   const double p_phi = Slope(phi_err[0], phi_err[1], 2),
                p_e = Slope(e_err[0], e_err[1], 2);
   BOOST_TEST_MESSAGE("space: |φ| off by "
-                     << phi_err[0] << ", " << phi_err[1] << ", " << phi_err[2]
-                     << " (order " << p_phi << "); E off by " << e_err[0]
-                     << ", " << e_err[1] << ", " << e_err[2] << " (order "
-                     << p_e << ")");
+                     << phi_err[0] << ", " << phi_err[1] << " (order " << p_phi
+                     << "); E off by " << e_err[0] << ", " << e_err[1]
+                     << " (order " << p_e << ")");
   BOOST_TEST(std::abs(p_phi - 2) < 0.3);
   BOOST_TEST(std::abs(p_e - 2) < 0.3);
 }
