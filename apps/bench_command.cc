@@ -3,6 +3,14 @@
 // error against the problem's reference, maximum energy and invariant
 // errors, median wall time of --repeats runs, function evaluations and
 // implicit iterations; as a table, or as JSON with --json FILE|-.
+//
+// With --rounds R (and the points given by --steps) every point is measured
+// R times in turn, each time with --repeats runs, and its time is the median
+// of the R medians: a VM whose speed drifts over seconds (by up to a factor
+// of two within minutes on the 2-core machines vivp is measured on) slows
+// every method of a round alike, so the ratios between methods hold where
+// one method's block of runs alone would take the drift.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -23,6 +31,7 @@ struct BenchOptions {
   std::string methods;  // comma-separated; empty: all for the problem
   std::string steps;    // comma-separated; empty: the default sweep
   long long repeats = 5;
+  long long rounds = 1;
   double budget = 1.0;
   long long slab_points = 0;  // 0: the solver's default window
   std::string json;
@@ -109,6 +118,11 @@ int RunBench(const BenchOptions& o) {
                        "' for " + problem->name +
                        "; valid: " + Join(problem->methods));
   const std::vector<double> steps = ParseSteps(o.steps);
+  if (o.rounds > 1 && steps.empty())
+    throw UsageError(
+        "--rounds interleaves the points given by --steps, and none are "
+        "given (a sweep chooses its points as it runs); add --steps or drop "
+        "--rounds");
   for (const auto& m : methods)
     for (double k : steps)
       if (!studies::IsAdaptive(m) && k != std::floor(k))
@@ -140,13 +154,43 @@ int RunBench(const BenchOptions& o) {
   std::ostream& human = o.json == "-" ? std::cerr : std::cout;
   human << "# " << problem->description << "; reference: " << problem->reference
         << "; median of " << o.repeats << " runs";
+  if (o.rounds > 1)
+    human << ", the median of " << o.rounds << " interleaved rounds of them";
   if (o.slab_points > 0)
     human << "; variational windows of " << o.slab_points << " points";
   human << '\n';
   human << "# method                  steps       tol      error  max|dH|/H "
            " max|dI|    seconds      evals  it/st status\n";
   nlohmann::json rows = nlohmann::json::array();
+  if (o.rounds > 1) {
+    // Round r measures every (method, point) once, in the order of the
+    // table; the rows keep round 1's errors and counts (every round runs
+    // the same computation) and the median of the rounds' times.
+    std::vector<studies::WorkPoint> points;
+    std::vector<std::vector<double>> times;
+    for (long long r = 0; r < o.rounds; ++r) {
+      std::size_t i = 0;
+      for (const auto& m : methods)
+        for (double k : steps) {
+          const studies::WorkPoint w =
+              problem->measure(m, k, static_cast<int>(o.repeats));
+          if (r == 0) {
+            points.push_back(w);
+            times.emplace_back();
+          }
+          times[i++].push_back(w.seconds);
+        }
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      auto& t = times[i];
+      std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+      points[i].seconds = t[t.size() / 2];
+      PrintRow(human, points[i]);
+      rows.push_back(RowJson(points[i]));
+    }
+  }
   for (const auto& m : methods) {
+    if (o.rounds > 1) break;  // measured above
     std::vector<studies::WorkPoint> sweep;
     if (steps.empty()) {
       sweep =
@@ -167,6 +211,7 @@ int RunBench(const BenchOptions& o) {
                               {"t_end", problem->t_end},
                               {"invariants", problem->invariant_names},
                               {"repeats", o.repeats},
+                              {"rounds", o.rounds},
                               {"slab_points", o.slab_points},
                               {"rows", rows}};
     WriteJson(o.json, j, 2);
@@ -191,6 +236,11 @@ Runner AddBenchCommand(CLI::App& app) {
                   "default: a doubling sweep to round-off or --budget");
   cmd->add_option("--repeats", o->repeats, "timed runs per point (median)")
       ->check(WholeNumberAtLeast(5, "at least 5"))
+      ->capture_default_str();
+  cmd->add_option("--rounds", o->rounds,
+                  "measure the --steps points in this many interleaved "
+                  "rounds of --repeats runs each (median of the rounds)")
+      ->check(WholeNumberAtLeast(1, "at least 1"))
       ->capture_default_str();
   cmd->add_option("--budget", o->budget,
                   "stop a sweep after a run slower than this many seconds")

@@ -44,6 +44,8 @@ BOOST_AUTO_TEST_CASE(BenchBadInput_ExitsTwoWithOneLineNamingValidValues) {
       {"bench --problem kepler --steps 10.5 --methods rk4", "whole numbers"},
       {"bench --problem kepler --repeats 2", "at least 5"},
       {"bench --problem kepler --budget inf", "finite"},
+      {"bench --problem kepler --rounds 0 --steps 64", "at least 1"},
+      {"bench --problem kepler --rounds 3", "add --steps or drop --rounds"},
       {"bench --problem anharmonic --methods rk4 --slab-points 96",
        "none is selected"},
       {"bench --problem anharmonic --methods variational_sbp84_uniform "
@@ -126,4 +128,30 @@ BOOST_AUTO_TEST_CASE(BenchSlabPoints_SetsTheVariationalWindow) {
   BOOST_TEST(ra.at("error").get<double>() != rb.at("error").get<double>());
   BOOST_TEST(ra.at("evaluations").get<long>() !=
              rb.at("evaluations").get<long>());
+}
+
+// --rounds measures the same points in interleaved rounds: the rows are
+// those of a plain run (order, errors, counts), only the times are medians
+// of rounds, and the JSON records the rounds.
+BOOST_AUTO_TEST_CASE(BenchRounds_KeepsTheRowsOfAPlainRun) {
+  const std::string run =
+      "bench --problem pendulum --methods gauss2,odeint_dopri5 "
+      "--steps 64,128 --json -";
+  const Run plain = Vivp(run, false);
+  const Run rounds = Vivp(run + " --rounds 3", false);
+  BOOST_REQUIRE(plain.status == 0);
+  BOOST_REQUIRE(rounds.status == 0);
+  const auto a = nlohmann::json::parse(plain.output);
+  const auto b = nlohmann::json::parse(rounds.output);
+  BOOST_TEST(a.at("rounds") == 1);
+  BOOST_TEST(b.at("rounds") == 3);
+  BOOST_REQUIRE(a.at("rows").size() == 4u);
+  BOOST_REQUIRE(b.at("rows").size() == 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    auto ra = a["rows"][i], rb = b["rows"][i];
+    BOOST_TEST(rb.at("seconds").get<double>() > 0);
+    ra.erase("seconds");
+    rb.erase("seconds");
+    BOOST_TEST(ra == rb, ra.dump() + " against " + rb.dump());
+  }
 }
