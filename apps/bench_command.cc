@@ -6,10 +6,12 @@
 //
 // With --rounds R (and the points given by --steps) every point is measured
 // R times in turn, each time with --repeats runs, and its time is the median
-// of the R medians: a VM whose speed drifts over seconds (by up to a factor
-// of two within minutes on the 2-core machines vivp is measured on) slows
-// every method of a round alike, so the ratios between methods hold where
-// one method's block of runs alone would take the drift.
+// of the R medians: where a VM's speed drifts over seconds (by up to a
+// factor of two within minutes on the 2-core machines vivp is measured
+// on), the drift falls on every method in turn instead of on one method's
+// block of runs. It may still slow some methods more than others
+// (docs/performance.md §4: the variational marches' times spread by 40 %
+// between rounds, McLachlan's RKN's by 2 %).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
