@@ -28,6 +28,13 @@ Run Vivp(const std::string& args, bool with_stderr = true) {
 
 using vivp::testing::Lines;
 
+// A bench run that must succeed, its JSON rows parsed (--json - in args).
+nlohmann::json BenchJson(const std::string& args) {
+  const Run r = Vivp(args, false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, args + ": " + r.output);
+  return nlohmann::json::parse(r.output);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(BenchBadInput_ExitsTwoWithOneLineNamingValidValues) {
@@ -66,12 +73,9 @@ BOOST_AUTO_TEST_CASE(BenchBadInput_ExitsTwoWithOneLineNamingValidValues) {
 }
 
 BOOST_AUTO_TEST_CASE(BenchJson_RowsCarryEveryMeasureAndFitTheOrder) {
-  const Run r = Vivp(
+  const auto j = BenchJson(
       "bench --problem pendulum --methods gauss2,odeint_dopri5 "
-      "--steps 64,128,256 --json -",
-      false);
-  BOOST_REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.output);
+      "--steps 64,128,256 --json -");
   BOOST_TEST(j.at("problem") == "pendulum");
   BOOST_REQUIRE(j.at("rows").size() == 6u);
   for (const auto& row : j.at("rows")) {
@@ -91,11 +95,8 @@ BOOST_AUTO_TEST_CASE(BenchJson_RowsCarryEveryMeasureAndFitTheOrder) {
 
 BOOST_AUTO_TEST_CASE(BenchUnstableConfiguration_IsAStatusNotACrash) {
   // RK4 on the harmonic oscillator at 3 steps for 10 periods: hω ≈ 21.
-  const Run r =
-      Vivp("bench --problem harmonic --methods rk4,midpoint --steps 3 --json -",
-           false);
-  BOOST_REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.output);
+  const auto j = BenchJson(
+      "bench --problem harmonic --methods rk4,midpoint --steps 3 --json -");
   BOOST_TEST(j["rows"][0]["status"] == "unstable");
   BOOST_TEST(j["rows"][0]["error"].is_null());
   BOOST_TEST(j["rows"][1]["status"] == "ok");
@@ -108,12 +109,8 @@ BOOST_AUTO_TEST_CASE(BenchSlabPoints_SetsTheVariationalWindow) {
   const std::string run =
       "bench --problem anharmonic --methods variational_sbp84_uniform "
       "--steps 384 --json -";
-  const Run standard = Vivp(run, false);
-  const Run longer = Vivp(run + " --slab-points 96", false);
-  BOOST_REQUIRE(standard.status == 0);
-  BOOST_REQUIRE(longer.status == 0);
-  const auto a = nlohmann::json::parse(standard.output);
-  const auto b = nlohmann::json::parse(longer.output);
+  const auto a = BenchJson(run);
+  const auto b = BenchJson(run + " --slab-points 96");
   BOOST_TEST(a.at("slab_points") == 0);
   BOOST_TEST(b.at("slab_points") == 96);
   const auto& ra = a.at("rows").at(0);
@@ -137,19 +134,17 @@ BOOST_AUTO_TEST_CASE(BenchRounds_KeepsTheRowsOfAPlainRun) {
   const std::string run =
       "bench --problem pendulum --methods gauss2,odeint_dopri5 "
       "--steps 64,128 --json -";
-  const Run plain = Vivp(run, false);
-  const Run rounds = Vivp(run + " --rounds 3", false);
-  BOOST_REQUIRE(plain.status == 0);
-  BOOST_REQUIRE(rounds.status == 0);
-  const auto a = nlohmann::json::parse(plain.output);
-  const auto b = nlohmann::json::parse(rounds.output);
+  const auto a = BenchJson(run);
+  const auto b = BenchJson(run + " --rounds 3");
   BOOST_TEST(a.at("rounds") == 1);
   BOOST_TEST(b.at("rounds") == 3);
   BOOST_REQUIRE(a.at("rows").size() == 4u);
   BOOST_REQUIRE(b.at("rows").size() == 4u);
   for (std::size_t i = 0; i < 4; ++i) {
     auto ra = a["rows"][i], rb = b["rows"][i];
-    BOOST_TEST(rb.at("seconds").get<double>() > 0);
+    // The time is only required to be there: timings belong to benchmark
+    // tables, not to pass/fail tests.
+    BOOST_TEST(rb.at("seconds").is_number());
     ra.erase("seconds");
     rb.erase("seconds");
     BOOST_TEST(ra == rb, ra.dump() + " against " + rb.dump());
