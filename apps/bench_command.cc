@@ -190,20 +190,20 @@ int RunBench(const BenchOptions& o) {
       PrintRow(human, points[i]);
       rows.push_back(RowJson(points[i]));
     }
-  }
-  for (const auto& m : methods) {
-    if (o.rounds > 1) break;  // measured above
-    std::vector<studies::WorkPoint> sweep;
-    if (steps.empty()) {
-      sweep =
-          studies::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
-    } else {
-      for (double k : steps)
-        sweep.push_back(problem->measure(m, k, static_cast<int>(o.repeats)));
-    }
-    for (const auto& w : sweep) {
-      PrintRow(human, w);
-      rows.push_back(RowJson(w));
+  } else {
+    for (const auto& m : methods) {
+      std::vector<studies::WorkPoint> sweep;
+      if (steps.empty()) {
+        sweep =
+            studies::Sweep(*problem, m, static_cast<int>(o.repeats), o.budget);
+      } else {
+        for (double k : steps)
+          sweep.push_back(problem->measure(m, k, static_cast<int>(o.repeats)));
+      }
+      for (const auto& w : sweep) {
+        PrintRow(human, w);
+        rows.push_back(RowJson(w));
+      }
     }
   }
   if (!o.json.empty()) {
