@@ -104,22 +104,46 @@ void PrintRow(std::ostream& out, const studies::WorkPoint& w) {
   out << line << w.status << '\n';
 }
 
-int RunBench(const BenchOptions& o) {
-  const studies::BenchProblem* problem = nullptr;
-  try {
-    problem = &studies::FindBenchProblem(o.problem);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--problem: ") + e.what());
+// --slab-points: at least the minimum window of every finite-difference
+// variational method selected, and at least one selected.
+void CheckSlabPoints(const BenchOptions& o,
+                     const std::vector<std::string>& methods) {
+  if (o.slab_points <= 0) return;
+  bool variational = false;
+  for (const auto& m : methods) {
+    if (!studies::IsVariationalMethod(m)) continue;
+    // A spectral element's window is the element: --slab-points does not
+    // apply to it.
+    const std::string op = studies::VariationalOperator(m);
+    if (sbp::IsElement(op)) continue;
+    variational = true;
+    const int minimum = sbp::Table(op).min_points;
+    if (o.slab_points < minimum)
+      throw UsageError(
+          "--slab-points " + std::to_string(o.slab_points) +
+          " is below the minimum window of " + op + " (" +
+          std::to_string(minimum) +
+          " points); use --slab-points >= " + std::to_string(minimum));
   }
+  if (!variational)
+    throw UsageError(
+        "--slab-points sets the window of the finite-difference variational "
+        "methods, and none is selected; add one to --methods (e.g. "
+        "variational_sbp84_uniform) or drop --slab-points");
+}
+
+// The methods asked for (all of the problem's by default), each checked.
+std::vector<std::string> CheckedMethods(const BenchOptions& o,
+                                        const studies::BenchProblem& problem,
+                                        const std::vector<double>& steps) {
   std::vector<std::string> methods =
-      o.methods.empty() ? problem->methods : SplitList(o.methods);
+      o.methods.empty() ? problem.methods : SplitList(o.methods);
   for (const auto& m : methods)
-    if (std::find(problem->methods.begin(), problem->methods.end(), m) ==
-        problem->methods.end())
+    if (std::find(problem.methods.begin(), problem.methods.end(), m) ==
+        problem.methods.end())
       throw UsageError("--methods: unknown or inapplicable method '" + m +
-                       "' for " + problem->name +
-                       "; valid: " + Join(problem->methods));
-  const std::vector<double> steps = ParseSteps(o.steps);
+                       "' for " + problem.name +
+                       "; valid: " + Join(problem.methods));
   if (o.rounds > 1 && steps.empty())
     throw UsageError(
         "--rounds interleaves the points given by --steps, and none are "
@@ -130,26 +154,48 @@ int RunBench(const BenchOptions& o) {
       if (!studies::IsAdaptive(m) && k != std::floor(k))
         throw UsageError("--steps: step counts must be whole numbers for " + m +
                          ", got " + std::to_string(k));
-  if (o.slab_points > 0) {
-    bool variational = false;
-    for (const auto& m : methods) {
-      if (!studies::IsVariationalMethod(m)) continue;
-      variational = true;
-      const std::string op = studies::VariationalOperator(m);
-      const int minimum = sbp::Table(op).min_points;
-      if (o.slab_points < minimum)
-        throw UsageError(
-            "--slab-points " + std::to_string(o.slab_points) +
-            " is below the minimum window of " + op + " (" +
-            std::to_string(minimum) +
-            " points); use --slab-points >= " + std::to_string(minimum));
-    }
-    if (!variational)
-      throw UsageError(
-          "--slab-points sets the window of the variational methods, and "
-          "none is selected; add one to --methods (e.g. "
-          "variational_sbp84_uniform) or drop --slab-points");
+  CheckSlabPoints(o, methods);
+  return methods;
+}
+
+// Round r measures every (method, point) once, in the order of the table;
+// the rows keep round 1's errors and counts (every round runs the same
+// computation) and the median of the rounds' times.
+std::vector<studies::WorkPoint> MeasureInRounds(
+    const BenchOptions& o, const studies::BenchProblem& problem,
+    const std::vector<std::string>& methods, const std::vector<double>& steps) {
+  std::vector<studies::WorkPoint> points;
+  std::vector<std::vector<double>> times;
+  for (long long r = 0; r < o.rounds; ++r) {
+    std::size_t i = 0;
+    for (const auto& m : methods)
+      for (double k : steps) {
+        const studies::WorkPoint w =
+            problem.measure(m, k, static_cast<int>(o.repeats));
+        if (r == 0) {
+          points.push_back(w);
+          times.emplace_back();
+        }
+        times[i++].push_back(w.seconds);
+      }
   }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    auto& t = times[i];
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    points[i].seconds = t[t.size() / 2];
+  }
+  return points;
+}
+
+int RunBench(const BenchOptions& o) {
+  const studies::BenchProblem* problem = nullptr;
+  try {
+    problem = &studies::FindBenchProblem(o.problem);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--problem: ") + e.what());
+  }
+  const std::vector<double> steps = ParseSteps(o.steps);
+  const std::vector<std::string> methods = CheckedMethods(o, *problem, steps);
   studies::SetVariationalWindowPoints(o.slab_points);
   if (!o.json.empty() && o.json != "-") CheckOutputFile(o.json, o.force);
 
@@ -165,30 +211,9 @@ int RunBench(const BenchOptions& o) {
            " max|dI|    seconds      evals  it/st status\n";
   nlohmann::json rows = nlohmann::json::array();
   if (o.rounds > 1) {
-    // Round r measures every (method, point) once, in the order of the
-    // table; the rows keep round 1's errors and counts (every round runs
-    // the same computation) and the median of the rounds' times.
-    std::vector<studies::WorkPoint> points;
-    std::vector<std::vector<double>> times;
-    for (long long r = 0; r < o.rounds; ++r) {
-      std::size_t i = 0;
-      for (const auto& m : methods)
-        for (double k : steps) {
-          const studies::WorkPoint w =
-              problem->measure(m, k, static_cast<int>(o.repeats));
-          if (r == 0) {
-            points.push_back(w);
-            times.emplace_back();
-          }
-          times[i++].push_back(w.seconds);
-        }
-    }
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      auto& t = times[i];
-      std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
-      points[i].seconds = t[t.size() / 2];
-      PrintRow(human, points[i]);
-      rows.push_back(RowJson(points[i]));
+    for (const auto& w : MeasureInRounds(o, *problem, methods, steps)) {
+      PrintRow(human, w);
+      rows.push_back(RowJson(w));
     }
   } else {
     for (const auto& m : methods) {

@@ -1,7 +1,8 @@
 // The variational solver as an external method of the work–precision harness
 // (bench_problems.h): the same problems and measurements as the steppers,
 // under error control (variational_sbpXY, a tolerance like odeint_dopri5's)
-// or on a uniform grid (variational_sbpXY_uniform, a step count).
+// or on a uniform grid (variational_sbpXY_uniform, a step count; also the
+// spectral elements, variational_lgl8_uniform …).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -40,7 +41,10 @@ long long& WindowOverride() {
 // Newton's march on a uniform grid or under error control. March sets it,
 // and the evaluation counts below use it.
 long long MethodWindow(const std::string& method) {
-  if (WindowOverride() > 0) return WindowOverride();
+  // A spectral element's window is the element, whatever was chosen for
+  // the finite-difference operators.
+  if (WindowOverride() > 0 && !sbp::IsElement(Operator(method)))
+    return WindowOverride();
   return variational::DefaultWindowPoints(variational::Path::kReducedNewton,
                                           Operator(method), Adaptive(method));
 }
@@ -58,6 +62,10 @@ variational::MarchResult March(const NamedProblem& p, const std::string& method,
     o.tolerance = {knob, knob};
   } else {
     g.points = static_cast<long long>(knob) + 1;
+    // A spectral element marches whole elements of n − 1 steps: the count
+    // rounded up to the next multiple (the row reports the steps taken).
+    if (const int n = sbp::Table(g.op).max_points; n > 0)
+      g.points = (static_cast<long long>(knob) + n - 2) / (n - 1) * (n - 1) + 1;
     o.stabilize = false;  // a step count means that step: no hidden refinement
   }
   return p.march(g, o, {});
@@ -216,17 +224,22 @@ BenchProblem DampedBenchProblem() {
 
 void RegisterVariationalMethods() {
   static const bool registered = [] {
+    // The finite-difference operators under error control and uniform, the
+    // spectral elements uniform only (march.h).
+    std::vector<std::string> names;
     for (const std::string& op : sbp::OperatorNames())
-      for (const std::string kind : {"", "_uniform"}) {
-        const std::string name = "variational_" + op + kind;
-        RegisterExternalMethod(
-            name,
-            [name](const std::string& problem, const std::vector<double>& y0,
-                   double t_end, double knob, bool trajectory) {
-              return RunVariational(name, problem, y0, t_end, knob, trajectory);
-            },
-            HasProblem, Adaptive(name));
-      }
+      for (const std::string kind : {"", "_uniform"})
+        names.push_back("variational_" + op + kind);
+    for (const sbp::Coefficients* e : sbp::ElementOperators())
+      names.push_back("variational_" + std::string(e->name) + "_uniform");
+    for (const std::string& name : names)
+      RegisterExternalMethod(
+          name,
+          [name](const std::string& problem, const std::vector<double>& y0,
+                 double t_end, double knob, bool trajectory) {
+            return RunVariational(name, problem, y0, t_end, knob, trajectory);
+          },
+          HasProblem, Adaptive(name));
     return true;
   }();
   (void)registered;

@@ -226,7 +226,7 @@ BOOST_AUTO_TEST_CASE(Factory_RejectsBadArguments_NamingTheValidRange) {
              "sbp21 needs at least 2 points, got -3");
   BOOST_TEST(message([] { MakeOperator<double>("sbp99", 32); }) ==
              "unknown SBP operator 'sbp99'; valid operators: sbp21, sbp42, "
-             "sbp63, sbp84");
+             "sbp63, sbp84, and the spectral elements lgl8, lgl12, lgl16");
   BOOST_TEST(message([] { MakeOperator<double>("sbp21", 32, 1.0, 1.0); }) ==
              "time interval [1, 1] is invalid; need finite values with t_end "
              "> t_start");

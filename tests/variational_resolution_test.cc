@@ -62,7 +62,8 @@ BOOST_AUTO_TEST_CASE(StabilityLimit_OfAnUnknownOperatorIsAnError) {
       StabilityLimit("sbp105"), std::invalid_argument, [](const auto& e) {
         return std::string(e.what()) ==
                "unknown SBP operator 'sbp105'; valid operators: sbp21, "
-               "sbp42, sbp63, sbp84";
+               "sbp42, sbp63, sbp84, and the spectral elements lgl8, lgl12, "
+               "lgl16";
       });
 }
 

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/sbp/lobatto.h"
 #include "core/sbp/mattsson_nordstrom2004.h"
 #include "core/sbp/operator.h"
 #include "core/sbp/strand1994.h"
@@ -48,13 +49,24 @@ inline std::string OperatorNameList() {
   return out;
 }
 
-// The coefficient table of an operator by name ("sbp21", ..., "sbp84"); an
-// unknown name is std::invalid_argument naming the valid ones.
+// The coefficient table of an operator by name ("sbp21", ..., "sbp84", or
+// a spectral element of lobatto.h, "lgl8", ...); an unknown name is
+// std::invalid_argument naming the valid ones. The elements are not in
+// Operators(): they are windows of a fixed size, for time marches only.
 inline const Coefficients& Table(std::string_view name) {
   for (const Coefficients* c : Operators())
     if (c->name == name) return *c;
+  for (const Coefficients* c : ElementOperators())
+    if (c->name == name) return *c;
   throw std::invalid_argument("unknown SBP operator '" + std::string(name) +
-                              "'; valid operators: " + OperatorNameList());
+                              "'; valid operators: " + OperatorNameList() +
+                              ", and the spectral elements " +
+                              ElementOperatorNameList());
+}
+
+// Whether an operator is a spectral element (a window of a fixed size).
+inline bool IsElement(std::string_view name) {
+  return Table(name).max_points > 0;
 }
 
 // What MakeOperator checks, without building the operator: its table, or
@@ -70,6 +82,13 @@ const Coefficients& CheckOperatorArguments(std::string_view name,
     throw std::invalid_argument(std::string(name) + " needs at least " +
                                 std::to_string(table.min_points) +
                                 " points, got " + std::to_string(points));
+  }
+  if (table.max_points > 0 && points != table.max_points) {
+    throw std::invalid_argument(
+        std::string(name) + " is one spectral element of exactly " +
+        std::to_string(table.max_points) + " points, got " +
+        std::to_string(points) + "; march in windows of " +
+        std::to_string(table.max_points) + " points");
   }
   if (points > (1LL << 30)) {
     throw std::invalid_argument("too many points (" + std::to_string(points) +

@@ -8,10 +8,12 @@
 //   * interior_stencil: the centred stencil on offsets -k..k used by every row
 //     between the closures.
 // The right closure follows by antisymmetry, D[N-1-i][N-1-j] = -D[i][j].
-// The coefficients are facts from the cited papers; builder.h turns them into
-// an Operator in any floating-point type. Beside them each table carries the
-// row `measured`: what this code measured of the operator as a time
-// derivative, the one place a solver looks up a constant of an operator.
+// The finite-difference tables are facts from the cited papers; the
+// spectral elements' (lobatto.h) are computed, rounded to dyadic rationals.
+// builder.h turns a table into an Operator in any floating-point type. Beside
+// them each table carries the row `measured`: what this code measured of the
+// operator as a time derivative, the one place a solver looks up a constant of
+// an operator.
 #pragma once
 
 #include <cstdint>
@@ -84,6 +86,13 @@ struct Coefficients {
   std::vector<std::vector<Rational>> boundary_block;
   std::vector<Rational> interior_stencil;
   Measured measured;
+  // A spectral element (lobatto.h) is one window of exactly this many
+  // points; 0 for a finite-difference operator, which takes any number from
+  // min_points.
+  int max_points = 0;
+  // The nodes' positions in units of dt, t_i = t_start + dt·offset_i (dt
+  // the interval over points − 1); empty for a uniform grid (offset_i = i).
+  std::vector<Rational> node_offsets;
 
   int boundary_rows() const { return static_cast<int>(boundary_block.size()); }
   int half_width() const {

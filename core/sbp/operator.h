@@ -1,4 +1,5 @@
-// An SBP first-derivative operator on a uniform time grid, stored as stencils.
+// An SBP first-derivative operator on a uniform time grid, stored as stencils
+// (or one spectral element, lobatto.h, on its Gauss–Lobatto nodes).
 //
 //   auto D = vivp::sbp::MakeOperator<double>("sbp42", 64, 0.0, 1.0);
 //   D.Apply(x, dx);          // dx = D x, O(N), any scalar (double, Jets, ...)
@@ -79,7 +80,11 @@ class Operator {
     if (k < 0 || k >= static_cast<int>(rw.coeffs.size())) return Real(0);
     return rw.coeffs[k] * inv_dt_;
   }
-  Real t(int i) const { return t_start_ + dt_ * static_cast<Real>(i); }
+  // Node i's time: uniform, or at a spectral element's node offsets.
+  Real t(int i) const {
+    return t_start_ +
+           dt_ * (offsets_.empty() ? static_cast<Real>(i) : offsets_[i]);
+  }
   // The same operator on [t_start, t_end]: the coefficients are per unit
   // step, so only the times change, computed as the constructor computes
   // them (the same bits as an operator built anew). A march under error
@@ -186,6 +191,7 @@ class Operator {
   int half_width_;
   int bandwidth_;
   std::vector<Real> weights_;
+  std::vector<Real> offsets_;  // node positions per unit dt (elements only)
   std::vector<std::vector<Real>> left_;   // rows 0..r-1
   std::vector<std::vector<Real>> right_;  // right_[i] is row N-1-i
   std::vector<Real> interior_;

@@ -30,6 +30,7 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
   closure_col_.reserve(2 * closure_entries);
   closure_coeff_.reserve(2 * closure_entries);
   for (const Rational& w : table.norm_weights) weights_.push_back(w.As<Real>());
+  for (const Rational& o : table.node_offsets) offsets_.push_back(o.As<Real>());
   for (const Rational& c : table.interior_stencil)
     interior_.push_back(c.As<Real>());
   // Apply evaluates the interior as Σ_k c_k (u_{i+k} − u_{i−k}).

@@ -42,6 +42,13 @@ class SpaceDerivative {
   // n points on [x0, x1] including both ends, Δx = (x1 − x0)/(n − 1).
   static SpaceDerivative Bounded(std::string_view name, int points, Real x0,
                                  Real x1) {
+    // Space is a uniform grid of any size: the finite-difference operators
+    // only, not the spectral elements (lobatto.h).
+    if (IsElement(name))
+      throw std::invalid_argument(
+          std::string(name) +
+          " is a spectral element in time; a space axis takes " +
+          OperatorNameList());
     SpaceDerivative s;
     s.bounded_.emplace(MakeOperator<Real>(name, points, x0, x1));
     s.x0_ = x0;

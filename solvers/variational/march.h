@@ -50,6 +50,38 @@
 
 namespace vivp::variational {
 
+namespace detail {
+
+// A spectral element (lobatto.h) marches a uniform grid in windows of its
+// own size n: the grid's steps a multiple of n − 1, no tolerance (error
+// control for elements is not measured: docs/method.md §13), the window n
+// points. Otherwise std::invalid_argument naming the fix.
+inline void CheckElementMarch(const Grid& grid, int n, bool adaptive,
+                              long long window_points) {
+  const std::string what =
+      grid.op + " is a spectral element of " + std::to_string(n) + " points";
+  if (adaptive)
+    throw std::invalid_argument(
+        what +
+        ": error control is not available for it; march a uniform grid (no "
+        "tolerance) or use sbp42, sbp63, sbp84");
+  if (window_points != n)
+    throw std::invalid_argument(what + ": it marches in windows of " +
+                                std::to_string(n) + " points, got " +
+                                std::to_string(window_points) +
+                                "; leave the window at its default");
+  const long long steps = grid.points - 1, per = n - 1;
+  const long long below = steps / per * per, above = below + per;
+  if (steps < per || steps % per != 0)
+    throw std::invalid_argument(
+        what + ": the steps must be a multiple of " + std::to_string(per) +
+        ", got " + std::to_string(steps) + "; use " +
+        (below > 0 ? std::to_string(below) + " or " : std::string()) +
+        std::to_string(above));
+}
+
+}  // namespace detail
+
 template <action::LagrangianProblem P>
 MarchResult MarchIvp(const P& problem, const InitialData& initial,
                      const Grid& grid, const MarchOptions& given = {},
@@ -74,9 +106,14 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
         ")");
   // Validates the grid (operator, points, interval) once; under error
   // control the operator's minimum stands in for the points.
-  const int min_points = sbp::Table(grid.op).min_points;
+  const sbp::Coefficients& table = sbp::Table(grid.op);
+  const int min_points = table.min_points;
+  if (table.max_points > 0)
+    detail::CheckElementMarch(grid, table.max_points, adaptive,
+                              options.window_points);
   sbp::CheckOperatorArguments<double>(
-      grid.op, adaptive ? min_points : grid.points, grid.t_start, grid.t_end);
+      grid.op, adaptive || table.max_points > 0 ? min_points : grid.points,
+      grid.t_start, grid.t_end);
   if (options.window_points < min_points)
     throw std::invalid_argument(
         "window of " + std::to_string(options.window_points) +

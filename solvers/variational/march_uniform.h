@@ -1,9 +1,12 @@
 // Marching on the uniform grid of grid.points nodes (march.h): a window of
 // W points covers W − 1 intervals, the last one takes the remainder (at
-// least the operator's minimum). A window that fails is solved again with a
-// fresh Jacobian, then split in halves (down to the operator's minimum);
-// with `stabilize`, a window whose Δt·ω exceeds the stability limit is solved
-// on a refined grid (and the requested grid's nodes returned).
+// least the operator's minimum). A spectral element (lobatto.h) marches in
+// windows of its own size, whose ends are on the grid and whose inner
+// nodes are its Gauss–Lobatto nodes. A window that fails is solved again
+// with a fresh Jacobian, then split in halves (down to the operator's
+// minimum); with `stabilize`, a window whose Δt·ω exceeds the stability
+// limit is solved on a refined grid (and the requested grid's nodes
+// returned).
 #pragma once
 
 #include "solvers/variational/march_core.h"
@@ -69,7 +72,8 @@ class UniformMarch : public MarchCore<WindowT> {
   // `at_least_double` (a window came out under-resolved somewhere inside).
   // False when refinement is off or would exceed options.max_refinement.
   bool Refine(const InitialData& state, bool at_least_double) {
-    if (!options_.stabilize) return false;
+    // A spectral element is a window of its fixed size: not refinable.
+    if (!options_.stabilize || sbp::IsElement(grid_.op)) return false;
     int needed = static_cast<int>(std::ceil(StepRatio(state) / 0.5));
     if (at_least_double)
       needed = std::max(needed, std::min(2 * refine_, options_.max_refinement));
@@ -92,8 +96,17 @@ class UniformMarch : public MarchCore<WindowT> {
         this->Solve(attempt_, state, t0, int((points - 1) * refine_ + 1), dt,
                     false, kPredictorTolerance, true);
     if (a.ok()) {
+      // A spectral element's nodes sit at its Gauss–Lobatto offsets between
+      // the window's ends (lobatto.h); a finite-difference window's on the
+      // grid.
+      const std::vector<sbp::Rational>& offsets =
+          sbp::Table(grid_.op).node_offsets;
       this->Accept(a, state, t0, refine_, last_of_march ? points : points - 1,
-                   depth, 0.0, [&](long long i) { return T(first + i); });
+                   depth, 0.0, [&](long long i) {
+                     if (offsets.empty() || i == 0 || i == points - 1)
+                       return T(first + i);
+                     return t0 + dt * offsets[std::size_t(i)].As<double>();
+                   });
       return true;
     }
     // Δt·ω above the limit: a shorter window has the same Δt, a finer grid

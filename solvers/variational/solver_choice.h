@@ -61,6 +61,9 @@ inline Path ParseSolver(const std::string& name) {
 // is std::invalid_argument naming the valid ones.
 inline long long DefaultWindowPoints(Path path, const std::string& op,
                                      bool tolerance = false) {
+  // A spectral element's window is the element (lobatto.h).
+  if (const sbp::Coefficients& t = sbp::Table(op); t.max_points > 0)
+    return t.max_points;
   if (path != Path::kCeresLm) return tolerance ? 24 : 48;
   return sbp::Table(op).measured.lm_window_points;
 }
@@ -81,7 +84,7 @@ struct SolveRequest {
 // (for a request CheckSolveRequest accepts).
 inline long long WindowPoints(const SolveRequest& r) {
   if (r.window_points >= 0) return r.window_points;
-  if (r.tolerance || r.path == Path::kCeresLm)
+  if (r.tolerance || r.path == Path::kCeresLm || sbp::IsElement(r.op))
     return DefaultWindowPoints(r.path, r.op, r.tolerance);
   return 0;
 }

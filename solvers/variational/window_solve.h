@@ -63,8 +63,14 @@ class WindowSolver {
       x0_[c] = initial.x[c];
       v0_[c] = order == 2 ? initial.v[c] : 0.0;
     }
+    // The nodes' times from the window's start: uniform, or a spectral
+    // element's Gauss–Lobatto nodes (lobatto.h).
+    const std::vector<sbp::Rational>& offsets =
+        sbp::Table(window_.op()).node_offsets;
     tau_.resize(points);
-    for (int i = 0; i < points; ++i) tau_[i] = dt * double(i);
+    for (int i = 0; i < points; ++i)
+      tau_[i] = offsets.empty() ? dt * double(i)
+                                : dt * offsets[std::size_t(i)].As<double>();
     px_.resize(std::size_t(points) * d);
     pv_.resize(std::size_t(points) * d);
     // On a uniform grid check 3 compares with the predictor to 1 % of the
