@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(BenchRounds_KeepsTheRowsOfAPlainRun) {
     auto ra = a["rows"][i], rb = b["rows"][i];
     // The time is only required to be there: timings belong to benchmark
     // tables, not to pass/fail tests.
-    BOOST_TEST(rb.at("seconds").is_number());
+    BOOST_TEST(rb.contains("seconds"));
     ra.erase("seconds");
     rb.erase("seconds");
     BOOST_TEST(ra == rb, ra.dump() + " against " + rb.dump());

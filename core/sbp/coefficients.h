@@ -94,6 +94,13 @@ struct Coefficients {
   // the interval over points − 1); empty for a uniform grid (offset_i = i).
   std::vector<Rational> node_offsets;
 
+  // Node i's position in units of dt: i on a uniform grid, else its offset.
+  template <class Real>
+  Real Offset(int i) const {
+    return node_offsets.empty() ? static_cast<Real>(i)
+                                : node_offsets[std::size_t(i)].As<Real>();
+  }
+
   int boundary_rows() const { return static_cast<int>(boundary_block.size()); }
   int half_width() const {
     return static_cast<int>(interior_stencil.size()) / 2;

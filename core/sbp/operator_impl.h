@@ -56,6 +56,11 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
     left_.push_back(std::move(l));
     right_.push_back(std::move(r));
   }
+  if (table.max_points > 0 && points != table.max_points)
+    throw std::invalid_argument(
+        std::string(table.name) + " is one spectral element of exactly " +
+        std::to_string(table.max_points) + " points, got " +
+        std::to_string(points) + "; build operators with MakeOperator");
   const int rows = table.boundary_rows();
   if (points < 2 * rows)
     throw std::invalid_argument(

@@ -99,13 +99,13 @@ class UniformMarch : public MarchCore<WindowT> {
       // A spectral element's nodes sit at its Gauss–Lobatto offsets between
       // the window's ends (lobatto.h); a finite-difference window's on the
       // grid.
-      const std::vector<sbp::Rational>& offsets =
-          sbp::Table(grid_.op).node_offsets;
+      const sbp::Coefficients& table = sbp::Table(grid_.op);
+      const bool element = table.max_points > 0;
       this->Accept(a, state, t0, refine_, last_of_march ? points : points - 1,
                    depth, 0.0, [&](long long i) {
-                     if (offsets.empty() || i == 0 || i == points - 1)
+                     if (!element || i == 0 || i == points - 1)
                        return T(first + i);
-                     return t0 + dt * offsets[std::size_t(i)].As<double>();
+                     return t0 + dt * table.Offset<double>(int(i));
                    });
       return true;
     }

@@ -65,12 +65,9 @@ class WindowSolver {
     }
     // The nodes' times from the window's start: uniform, or a spectral
     // element's Gauss–Lobatto nodes (lobatto.h).
-    const std::vector<sbp::Rational>& offsets =
-        sbp::Table(window_.op()).node_offsets;
+    const sbp::Coefficients& table = sbp::Table(window_.op());
     tau_.resize(points);
-    for (int i = 0; i < points; ++i)
-      tau_[i] = offsets.empty() ? dt * double(i)
-                                : dt * offsets[std::size_t(i)].As<double>();
+    for (int i = 0; i < points; ++i) tau_[i] = dt * table.Offset<double>(i);
     px_.resize(std::size_t(points) * d);
     pv_.resize(std::size_t(points) * d);
     // On a uniform grid check 3 compares with the predictor to 1 % of the
