@@ -95,8 +95,13 @@ void Print(const char* kind, double tol, const Run& run, double error) {
       p.checks * us, other * us);
 }
 
-void Measure(const Row& row, int repeats, long long window, bool trajectory) {
+void Measure(const Row& row, int repeats, long long chosen, bool trajectory) {
   const studies::NamedProblem& problem = studies::FindProblem(row.problem);
+  // A spectral element's window is the element.
+  const long long window =
+      sbp::IsElement(row.op)
+          ? DefaultWindowPoints(Path::kReducedNewton, row.op, true)
+          : chosen;
   Grid grid{.op = row.op, .t_start = 0.0, .t_end = row.t_end};
   MarchOptions o;
   o.window_points = window;

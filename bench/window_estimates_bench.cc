@@ -8,16 +8,24 @@
 //
 // Windows whose true error is below 1e3·ε of the solution's size are left out
 // of the ratios (round-off, not truncation). Rows: operator, march (uniform
-// grid of 4097 points, or error control at 1e-6; SBP21 at 1e-4), problem;
-// columns: windows,
-// the 10/50/90 % quantiles and the extremes of the ratios.
+// grid of 4097 points, or error control at 1e-6 — SBP21 at 1e-4 — or at the
+// tolerance given as the only argument), problem; columns: windows, the
+// 10/50/90 % quantiles and the extremes of the ratios.
+//
+// The spectral elements too: on a uniform grid their estimates are those of
+// every window (of the end node, of order about n); under error control each
+// window is a half of an element solved whole and halved, and its estimate
+// that of the halves' hand-off (solvers/variational/element_halves.h), so
+// only the last two columns apply.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "core/sbp/builder.h"
+#include "core/sbp/lobatto.h"
 #include "problems/anharmonic.h"
 #include "problems/kepler.h"
 #include "problems/pendulum.h"
@@ -48,7 +56,10 @@ Quantiles Of(std::vector<double> v) {
 // The tolerance of the march under error control: 1e-6, and 1e-4 for an
 // operator whose last node has a first-order velocity (SBP21): its step
 // scales like the tolerance, and 1e-6 would take 10^8 nodes here.
+// A tolerance given on the command line replaces it for every operator.
+double given_level = 0;
 double Level(const std::string& op) {
+  if (given_level > 0) return given_level;
   return vivp::sbp::Table(op).boundary_order == 1 ? 1e-4 : 1e-6;
 }
 
@@ -96,7 +107,9 @@ void Collect(const P& problem, const vivp::variational::InitialData& init,
     if (est_x > floor_x) r.handoff_x.push_back(hx / est_x);
     if (est_v > floor_v) r.handoff_v.push_back(hv / est_v);
   };
-  Grid g{.op = op, .points = 4097, .t_end = t_end};
+  // A spectral element's uniform grid: whole elements of n − 1 steps.
+  const long long per = std::max(sbp::Table(op).max_points - 1, 1);
+  Grid g{.op = op, .points = (4096 + per - 1) / per * per + 1, .t_end = t_end};
   const vivp::variational::MarchResult m = MarchIvp(problem, init, g, o);
   if (!m.status.converged)
     std::printf("# %s, %s: %s\n", op.c_str(),
@@ -116,7 +129,16 @@ void Row(const char* op, const char* march, const char* what, const Ratios& r) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc > 1) {
+    given_level = std::atof(argv[1]);
+    if (!(given_level > 0) || argc > 2) {
+      std::fprintf(stderr,
+                   "usage: window_estimates_bench [tolerance > 0], got '%s'\n",
+                   argv[1]);
+      return 2;
+    }
+  }
   std::printf(
       "# estimate / true local error of x_N and (Dx)_N: min 10%% 50%% 90%% "
       "max; then the largest true error of the hand-off over the estimate "
@@ -126,7 +148,10 @@ int main() {
               "|(Dx)_N + M^-1 l3| / err (Dx)_N", "hand-off / est.");
   problems::Kepler e06, e09;
   e09.e = 0.9;
-  for (const std::string& name : vivp::sbp::OperatorNames()) {
+  std::vector<std::string> ops = vivp::sbp::OperatorNames();
+  for (const vivp::sbp::Coefficients* e : vivp::sbp::ElementOperators())
+    ops.emplace_back(e->name);
+  for (const std::string& name : ops) {
     const char* op = name.c_str();
     for (bool tolerance : {false, true}) {
       const std::string march =

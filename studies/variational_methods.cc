@@ -1,8 +1,8 @@
 // The variational solver as an external method of the work–precision harness
 // (bench_problems.h): the same problems and measurements as the steppers,
 // under error control (variational_sbpXY, a tolerance like odeint_dopri5's)
-// or on a uniform grid (variational_sbpXY_uniform, a step count; also the
-// spectral elements, variational_lgl8_uniform …).
+// or on a uniform grid (variational_sbpXY_uniform, a step count); the
+// spectral elements likewise (variational_lgl8, variational_lgl8_uniform …).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -224,14 +224,15 @@ BenchProblem DampedBenchProblem() {
 
 void RegisterVariationalMethods() {
   static const bool registered = [] {
-    // The finite-difference operators under error control and uniform, the
-    // spectral elements uniform only (march.h).
+    // Every operator under error control and uniform: the finite-difference
+    // operators and the spectral elements.
     std::vector<std::string> names;
-    for (const std::string& op : sbp::OperatorNames())
+    std::vector<std::string> ops = sbp::OperatorNames();
+    for (const sbp::Coefficients* e : sbp::ElementOperators())
+      ops.emplace_back(e->name);
+    for (const std::string& op : ops)
       for (const std::string kind : {"", "_uniform"})
         names.push_back("variational_" + op + kind);
-    for (const sbp::Coefficients* e : sbp::ElementOperators())
-      names.push_back("variational_" + std::string(e->name) + "_uniform");
     for (const std::string& name : names)
       RegisterExternalMethod(
           name,

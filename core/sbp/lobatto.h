@@ -25,6 +25,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/sbp/coefficients.h"
@@ -36,5 +37,15 @@ const std::vector<const Coefficients*>& ElementOperators();
 
 // "lgl8, lgl12, lgl16".
 std::string ElementOperatorNameList();
+
+// The element's interpolating polynomial through its n nodes at the times
+// `at` (per unit step from the element's start, as its node offsets): an
+// at.size() × n row-major matrix whose row k holds ℓ_i(at[k]), the Lagrange
+// polynomials of the Gauss–Lobatto nodes. Error control starts the two
+// halves of an element from the whole one's polynomial
+// (solvers/variational/march_adaptive.h). std::invalid_argument for a name
+// that is not an element.
+std::vector<double> ElementInterpolation(std::string_view name,
+                                         const std::vector<double>& at);
 
 }  // namespace vivp::sbp

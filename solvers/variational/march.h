@@ -27,7 +27,9 @@
 //       embedded error estimates; a window whose estimates exceed the
 //       tolerance, or that fails, is rejected and solved again with a
 //       smaller Δt. SBP21, whose position estimate is unreliable, estimates
-//       by step doubling (the window again at Δt/2; the finer one is kept).
+//       by step doubling (the window again at Δt/2; the finer one is kept);
+//       a spectral element's window is the element, solved whole and as
+//       two halves, which are kept (element_halves.h).
 // Every fallback, rejection and check failure is counted and reported.
 //
 // Output: an observer sees every node once, in order, with its time, so
@@ -52,24 +54,19 @@ namespace vivp::variational {
 
 namespace detail {
 
-// A spectral element (lobatto.h) marches a uniform grid in windows of its
-// own size n: the grid's steps a multiple of n − 1, no tolerance (error
-// control for elements is not measured: docs/method.md §13), the window n
-// points. Otherwise std::invalid_argument naming the fix.
+// A spectral element (lobatto.h) marches in windows of its own size n; on a
+// uniform grid the steps are a multiple of n − 1. Otherwise
+// std::invalid_argument naming the fix.
 inline void CheckElementMarch(const Grid& grid, int n, bool adaptive,
                               long long window_points) {
   const std::string what =
       grid.op + " is a spectral element of " + std::to_string(n) + " points";
-  if (adaptive)
-    throw std::invalid_argument(
-        what +
-        ": error control is not available for it; march a uniform grid (no "
-        "tolerance) or use sbp42, sbp63, sbp84");
   if (window_points != n)
     throw std::invalid_argument(what + ": it marches in windows of " +
                                 std::to_string(n) + " points, got " +
                                 std::to_string(window_points) +
                                 "; leave the window at its default");
+  if (adaptive) return;
   const long long steps = grid.points - 1, per = n - 1;
   const long long below = steps / per * per, above = below + per;
   if (steps < per || steps % per != 0)

@@ -4,12 +4,15 @@
 // whose estimates exceed the tolerance, or that fails, is rejected and solved
 // again with a smaller Δt. SBP21, whose position estimate is unreliable,
 // estimates by step doubling (the window again at Δt/2; the finer one is
-// kept). See docs/error_control.md.
+// kept); a spectral element by its two halves (element_halves.h), which are
+// kept. See docs/error_control.md.
 #pragma once
 
+#include <optional>
 #include <utility>
 
 #include "core/sbp/builder.h"
+#include "solvers/variational/element_halves.h"
 #include "solvers/variational/march_core.h"
 
 namespace vivp::variational::detail {
@@ -23,8 +26,12 @@ class AdaptiveMarch : public MarchCore<WindowT> {
 
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
-    // Step doubling where the position estimate is not one (SBP21).
-    const bool doubling = !sbp::Table(grid_.op).measured.position_estimate;
+    // Step doubling where the position estimate is not one (SBP21); a
+    // spectral element by its halves (element_halves.h).
+    const sbp::Coefficients& table = sbp::Table(grid_.op);
+    if (table.max_points > 0)
+      halves_.emplace(window_, grid_.op, options_.hand_off);
+    const bool doubling = !halves_ && !table.measured.position_estimate;
     StepController control(EstimateOrder(grid_.op));
     double t = grid_.t_start;
     double dt = InitialStep(state);
@@ -32,29 +39,41 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     while (t < grid_.t_end) {
       const Window w = NextWindow(t, dt, state);
       if (!CanContinue(t, w, rejected_in_row)) return false;
-      Attempt& a = this->Solve(attempt_, state, t, w.points, w.dt, false,
-                               PredictorTolerance(), false);
-      if (a.ok() && doubling) {
-        Doubled(state, t, a, fine_);
+      // A whole element factors its own Jacobian: the last one is a pair
+      // back, a whole element's length away and at another step, and chord
+      // steps on it failed or crawled (Kepler e = 0.9 over three orbits,
+      // lgl8 at 10⁻⁹ … 10⁻¹²: 2 fallbacks and 1 check failure to none, time
+      // −5 … −30 %).
+      Attempt* a =
+          &this->Solve(attempt_, state, t, w.points, w.dt, bool(halves_),
+                       PredictorTolerance(), false, bool(halves_));
+      if (a->ok() && doubling) {
+        Doubled(state, t, *a, fine_);
         std::swap(attempt_, fine_);  // a (attempt_) is now the fine window
+      } else if (a->ok() && halves_) {
+        const bool solved = halves_->Solve(*a, state, t, this->WantNodes());
+        for (int k = 0; k < 2; ++k) out_.phases += halves_->half(k).phases;
+        a = &halves_->half(solved ? 1 : halves_->half(0).ok() ? 1 : 0);
       }
-      const double err = a.ok() ? ErrorNorm(state, a) : NAN;
-      if (!a.ok() || !(err <= 1)) {
+      const double err = a->ok() ? ErrorNorm(state, *a) : NAN;
+      if (!a->ok() || !(err <= 1)) {
         ++out_.rejected;
         ++rejected_in_row;
-        if (!Rejected(state, a, err, t, w.dt, control, dt)) return false;
+        if (!Rejected(state, *a, err, t, w.dt, control, dt)) return false;
         continue;
       }
       rejected_in_row = 0;
       truncation_rejected_at_ = 0;
       tried_between_ = false;
-      const double t0 = t, t1 = t + a.dt * double(a.points - 1);
-      this->Accept(a, state, t0, 1, w.last ? a.points : a.points - 1, 0, err,
-                   [&](long long i) {
-                     return i == a.points - 1 ? (w.last ? grid_.t_end : t1)
-                                              : t0 + a.dt * double(i);
-                   });
-      t = w.last ? grid_.t_end : t1;
+      const double t1 = w.last ? grid_.t_end : t + w.dt * double(w.points - 1);
+      if (halves_) {
+        const double middle = t + 0.5 * w.dt * double(w.points - 1);
+        AcceptWindow(halves_->half(0), state, t, middle, false, err);
+        AcceptWindow(halves_->half(1), state, middle, t1, w.last, err);
+      } else {
+        AcceptWindow(*a, state, t, t1, w.last, err);
+      }
+      t = t1;
       dt = control.Accept(w.dt, err);
     }
     return true;
@@ -69,6 +88,20 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   using Core::out_;
   using Core::Text;
   using Core::window_;
+
+  // Accepts a window from t0 to t1 (its last node at t1 exactly): all its
+  // nodes if it is the last, else all but the end node, which is the next
+  // window's first. A spectral element's nodes at their Gauss–Lobatto times.
+  void AcceptWindow(const Attempt& a, InitialData& state, double t0, double t1,
+                    bool last, double err) {
+    const sbp::Coefficients& table = sbp::Table(grid_.op);
+    this->Accept(a, state, t0, 1, last ? a.points : a.points - 1, 0, err,
+                 [&](long long i) {
+                   return i == a.points - 1
+                              ? t1
+                              : t0 + a.dt * table.Offset<double>(int(i));
+                 });
+  }
 
   // The next window from t: W points at the step dt, which is first kept at
   // half the stability limit of Δt·ω (resolution.h); the last windows are
@@ -155,6 +188,17 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   // is small against the window's (the consistency check compares them).
   Tolerance PredictorTolerance() const {
     const Tolerance& t = options_.tolerance;
+    // A spectral element's predictor is its Newton start and the reference
+    // of check 2 only (the halves estimate its error): at 10⁻⁶ it is
+    // small against the solution, which another branch differs by, and
+    // against the check's allowance, the error of the element's end node
+    // (of order about n, far above the tolerance). Kepler e = 0.9 over three
+    // orbits, lgl8 at 10⁻⁹ … 10⁻¹³: 5–18 times fewer predictor steps than
+    // at the hundredth of the tolerance, the same Newton corrections and
+    // nodes within 1 %.
+    if (halves_)
+      return {std::max(t.absolute, kElementPredictor),
+              std::max(t.relative, kElementPredictor)};
     return {t.absolute > 0 ? std::max(0.01 * t.absolute, 1e-15) : 0.0,
             t.relative > 0 ? std::max(0.01 * t.relative, 1e-14) : 0.0};
   }
@@ -193,7 +237,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   }
 
   // Why a rejected window's error is round-off: its largest term is a
-  // velocity estimate within twice the round-off level of (Dx)_N; "" if not.
+  // velocity estimate within twice the round-off level of (Dx)_N (an
+  // element's: the difference of its halves within twice theirs, position
+  // or velocity); "" if not.
   std::string RoundOffBound(const InitialData& state, const Attempt& a) const {
     if (order_ != 2) return "";
     const Tolerance& tol = options_.tolerance;
@@ -208,6 +254,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       if (a.est_x[c] / ax > worst) {
         worst = a.est_x[c] / ax;
         velocity = false;
+        est = a.est_x[c];
+        level = halves_ ? halves_->PositionRoundOff(c) : 0.0;
+        allowance = ax;
       }
       if (a.est_v[c] / av > worst) {
         worst = a.est_v[c] / av;
@@ -217,12 +266,18 @@ class AdaptiveMarch : public MarchCore<WindowT> {
         allowance = av;
       }
     }
-    if (!velocity || !(est <= 2 * level)) return "";
-    return "it is below the round-off of the window's velocity estimate (at "
-           "step " +
-           Text(a.dt) + " the estimate " + Text(est) +
-           " is within twice the round-off level eps*sum|D_N|*max|x| = " +
-           Text(level) + " of (Dx)_N; the allowance is " + Text(allowance) +
+    if (!(velocity || halves_) || !(est <= 2 * level)) return "";
+    const std::string of =
+        halves_
+            ? "64*n*eps*|" + std::string(velocity ? "v" : "x") + "|/" +
+                  Text(ElementHalves<WindowT>::kDivisor) + ", " + Text(level) +
+                  ", of the difference of an element and its halves"
+            : "eps*sum|D_N|*max|x| = " + Text(level) + " of (Dx)_N";
+    return "it is below the round-off of the window's " +
+           std::string(velocity ? "velocity" : "position") +
+           " estimate (at step " + Text(a.dt) + " the estimate " + Text(est) +
+           " is within twice the round-off level " + of +
+           "; the allowance is " + Text(allowance) +
            "); use a larger tolerance";
   }
 
@@ -255,11 +310,14 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     out_.status = {false, s.str()};
   }
 
+  static constexpr double kElementPredictor = 1e-6;
   std::string last_why_;
   double last_residual_ = NAN;
   // Every window's attempt and, with step doubling, its half-step
   // solution's: their storage kept from window to window.
   Attempt attempt_, fine_;
+  // A spectral element's halves (element_halves.h).
+  std::optional<ElementHalves<WindowT>> halves_;
   // Since the last accepted window: the largest step rejected on
   // truncation, and whether a step below it was tried after round-off.
   double truncation_rejected_at_ = 0;

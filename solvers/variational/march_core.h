@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sbp/builder.h"
 #include "solvers/variational/march_types.h"
 #include "solvers/variational/resolution.h"
 #include "solvers/variational/step_control.h"
@@ -34,6 +35,7 @@ class MarchCore {
         d_(window.dim()),
         order_(window.order()),
         min_points_(min_points),
+        element_(sbp::IsElement(grid.op)),
         solver_(window, options) {}
 
   std::vector<double> xs_, vs_;  // kept nodes, node-major
@@ -42,11 +44,13 @@ class MarchCore {
   bool WantNodes() const { return bool(observer_) || options_.keep_trajectory; }
 
   // The window from `state` at time t0, into `a` (returned); `uniform` adds
-  // the resolution check of window_solve.h.
+  // the resolution check of window_solve.h; `nodes` keeps the nodes even
+  // when nothing asks for them.
   Attempt& Solve(Attempt& a, const InitialData& state, double t0, int points,
-                 double dt, bool fresh, Tolerance predictor, bool uniform) {
-    solver_.Solve(a, state, t0, points, dt, fresh, WantNodes(), predictor,
-                  uniform);
+                 double dt, bool fresh, Tolerance predictor, bool uniform,
+                 bool nodes = false) {
+    solver_.Solve(a, state, t0, points, dt, fresh, nodes || WantNodes(),
+                  predictor, uniform);
     out_.predictor_steps += a.predictor_steps;
     out_.phases += a.phases;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
@@ -56,7 +60,7 @@ class MarchCore {
       // once more with a Jacobian of this window's own. (A solver that
       // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
-      return Solve(a, state, t0, points, dt, true, predictor, uniform);
+      return Solve(a, state, t0, points, dt, true, predictor, uniform, nodes);
     }
     return a;
   }
@@ -95,10 +99,22 @@ class MarchCore {
     if (WantNodes()) {
       node_x_.resize(d);
       node_v_.resize(d);
+      const bool corrected = options_.hand_off == HandOff::kCorrected;
       for (long long i = 0; i < count; ++i) {
+        // A spectral element's first node is the state handed to it, and
+        // its last (the march's end) the state it hands on: its (Dx)_0 and
+        // (Dx)_N are derivatives of the element's polynomial, of order about
+        // n, the hand-off of order 2n − 2 (docs/method.md §13).
+        const bool first = element_ && i == 0;
+        const bool last = element_ && corrected && i * stride == a.points - 1;
         for (int c = 0; c < d; ++c) {
-          node_x_[c] = a.X(int(i * stride), c);
-          node_v_[c] = a.V(int(i * stride), c);
+          node_x_[c] = first  ? state.x[c]
+                       : last ? a.end.position[c]
+                              : a.X(int(i * stride), c);
+          node_v_[c] = order_ != 2 ? a.V(int(i * stride), c)
+                       : first     ? state.v[c]
+                       : last      ? a.end.velocity[c]
+                                   : a.V(int(i * stride), c);
         }
         Emit(time_of(i), node_x_.data(), node_v_.data());
       }
@@ -148,6 +164,7 @@ class MarchCore {
   int d_;  // components of the state
   int order_;
   int min_points_;
+  bool element_;  // a spectral element's windows (lobatto.h)
 
  private:
   void Emit(double t, const double* x, const double* v) {

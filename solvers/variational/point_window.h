@@ -93,6 +93,11 @@ class PointWindow {
   // reduced Newton engine), so that solving it again afresh can help.
   bool ReusesFactorizations() const { return EngineApplies(); }
 
+  // Windows of one length solved in alternation at two steps (a spectral
+  // element and its halves, element_halves.h) each keep an engine, and so
+  // their operators and factorization: slot 0 or 1.
+  void set_engine_slot(int slot) { slot_ = slot; }
+
   long long factorizations() const {
     long long n = 0;
     for (const auto& e : engines_) n += e->factorizations();
@@ -250,13 +255,14 @@ class PointWindow {
   }
 
   WindowEngine<P>& Engine(int points, double dt) {
-    for (auto& e : engines_)
-      if (e->points() == points) {
-        e->SetStep(dt);
-        return *e;
+    for (std::size_t k = 0; k < engines_.size(); ++k)
+      if (engines_[k]->points() == points && slots_[k] == slot_) {
+        engines_[k]->SetStep(dt);
+        return *engines_[k];
       }
     engines_.push_back(std::make_unique<WindowEngine<P>>(problem_, op_, sigma0_,
                                                          points, dt, order_));
+    slots_.push_back(slot_);
     return *engines_.back();
   }
 
@@ -268,6 +274,8 @@ class PointWindow {
   Predictor<P> predictor_;
   double predictor_factor_ = 1.0;
   std::vector<std::unique_ptr<WindowEngine<P>>> engines_;
+  std::vector<int> slots_;  // the slot each engine serves (set_engine_slot)
+  int slot_ = 0;
   const WindowEngine<P>* last_engine_ = nullptr;  // of the last solve
   // Every window's engine outcome, its arrays' storage kept.
   typename WindowEngine<P>::Outcome outcome_;
