@@ -142,9 +142,8 @@ BOOST_AUTO_TEST_CASE(BenchRounds_KeepsTheRowsOfAPlainRun) {
   BOOST_REQUIRE(b.at("rows").size() == 4u);
   for (std::size_t i = 0; i < 4; ++i) {
     auto ra = a["rows"][i], rb = b["rows"][i];
-    // The time is only required to be there: timings belong to benchmark
-    // tables, not to pass/fail tests.
-    BOOST_TEST(rb.contains("seconds"));
+    // The times are medians of different runs and are not compared:
+    // timings belong to benchmark tables, not to pass/fail tests.
     ra.erase("seconds");
     rb.erase("seconds");
     BOOST_TEST(ra == rb, ra.dump() + " against " + rb.dump());

@@ -49,6 +49,9 @@ class ElementHalves {
   static constexpr double kDivisor = 16.0;
 
   WindowAttempt& half(int k) { return half_[k]; }
+  // What the march judges after Solve: the half that failed, or the second
+  // half, which carries the pair's estimate.
+  WindowAttempt& judged() { return half_[0].ok() ? half_[1] : half_[0]; }
   // The round-off level of the last pair's position estimate of component c
   // (the velocity's is the halves' roundoff_v).
   double PositionRoundOff(int c) const { return roundoff_x_[c]; }
@@ -60,7 +63,6 @@ class ElementHalves {
              bool nodes) {
     const int d = whole.n;
     from_ = start;
-    InitialData& from = from_;
     Slot(1);
     for (int k = 0; k < 2; ++k) {
       WindowAttempt& a = half_[k];
@@ -68,7 +70,7 @@ class ElementHalves {
       a.points = n_;
       a.dt = 0.5 * whole.dt;
       Interpolate(k, whole);
-      if (!window_.Solve(a, t0 + 0.5 * whole.dt * double(k * (n_ - 1)), from,
+      if (!window_.Solve(a, t0 + 0.5 * whole.dt * double(k * (n_ - 1)), from_,
                          px_, pv_, false, nodes))
         return Slot(0), false;
       if (std::string why = CheckFinite(a, window_.order()); !why.empty()) {
@@ -78,9 +80,9 @@ class ElementHalves {
       }
       const bool corrected = hand_off_ == HandOff::kCorrected;
       for (int c = 0; c < d; ++c) {
-        from.x[c] = corrected ? a.end.position[c] : a.x_end[c];
+        from_.x[c] = corrected ? a.end.position[c] : a.x_end[c];
         if (window_.order() == 2)
-          from.v[c] = corrected ? a.end.velocity[c] : a.v_end[c];
+          from_.v[c] = corrected ? a.end.velocity[c] : a.v_end[c];
       }
     }
     Slot(0);

@@ -51,9 +51,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
         Doubled(state, t, *a, fine_);
         std::swap(attempt_, fine_);  // a (attempt_) is now the fine window
       } else if (a->ok() && halves_) {
-        const bool solved = halves_->Solve(*a, state, t, this->WantNodes());
+        halves_->Solve(*a, state, t, this->WantNodes());
         for (int k = 0; k < 2; ++k) out_.phases += halves_->half(k).phases;
-        a = &halves_->half(solved ? 1 : halves_->half(0).ok() ? 1 : 0);
+        a = &halves_->judged();
       }
       const double err = a->ok() ? ErrorNorm(state, *a) : NAN;
       if (!a->ok() || !(err <= 1)) {
