@@ -20,6 +20,7 @@
 // is within the tolerance of the whole element's are on its branch.
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -102,23 +103,20 @@ class ElementHalves {
   // The whole element's polynomial (positions and their derivatives) at
   // half k's nodes: the start of its Newton iteration.
   void Interpolate(int k, const WindowAttempt& whole) {
+    using Rows =
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     const int d = whole.n;
-    const std::vector<double>& e = Interpolation(k);
-    px_.assign(std::size_t(n_) * d, 0.0);
-    pv_.assign(std::size_t(n_) * d, 0.0);
-    for (int i = 0; i < n_; ++i) {
-      const double* l = &e[std::size_t(i) * n_];
-      double* x = &px_[std::size_t(i) * d];
-      double* v = &pv_[std::size_t(i) * d];
-      for (int j = 0; j < n_; ++j) {
-        const double* wx = &whole.x[std::size_t(j) * d];
-        const double* wv = &whole.v[std::size_t(j) * d];
-        for (int c = 0; c < d; ++c) {
-          x[c] += l[j] * wx[c];
-          v[c] += l[j] * wv[c];
-        }
-      }
-    }
+    const Eigen::Map<const Rows> e(Interpolation(k).data(), n_, n_);
+    px_.resize(std::size_t(n_) * d);
+    pv_.resize(std::size_t(n_) * d);
+    // Nodes are rows (node-major storage). A lazy product: the hand-written
+    // triple loop over std::vector took 9 % of an lgl8 march's instructions;
+    // with it the march takes 5 % fewer (callgrind, Kepler e = 0.9 over
+    // three orbits at 1e-10 and 1e-12; lgl12 4 %).
+    Eigen::Map<Rows>(px_.data(), n_, d).noalias() =
+        e.lazyProduct(Eigen::Map<const Rows>(whole.x.data(), n_, d));
+    Eigen::Map<Rows>(pv_.data(), n_, d).noalias() =
+        e.lazyProduct(Eigen::Map<const Rows>(whole.v.data(), n_, d));
   }
 
   // Half k's node i lies at k·(n − 1)/2 + offset_i/2 steps of the whole
