@@ -203,6 +203,19 @@ class Operator {
   // vectorized, Apply takes 31 % fewer instructions; docs/performance.md §3).
   std::vector<int> closure_start_, closure_col_;
   std::vector<Real> closure_coeff_;
+  // The same closures as dense blocks, column-major (column j of the left
+  // block at [j·r, (j + 1)·r), zeros where a row has no entry), for Apply on
+  // plain numbers: the sums then run column by column for all r rows at
+  // once, each row's terms still added in the order of its columns, so the
+  // bits are ClosureRow's, and the loop over the rows vectorizes. A spectral
+  // element is nothing but closure rows (lgl8: 8 rows of 7 entries): its
+  // Apply took 650 instructions a row at a time, 440 as blocks, and a
+  // residual applies D about five times (v = D̄x̄ and D̄ᵀHw per coordinate;
+  // docs/performance.md §9).
+  static constexpr int kMaxBlockRows = 16;
+  int left_width_ = 0, right_width_ = 0;
+  std::vector<Real> left_block_, right_block_;
+  void ApplyClosureBlocks(const Real* u, Real* out) const;
 };
 
 }  // namespace vivp::sbp

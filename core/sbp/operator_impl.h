@@ -1,8 +1,10 @@
 // Template definitions of Operator (operator.h); not included directly.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace vivp::sbp {
 
@@ -78,6 +80,73 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
       }
     closure_start_.push_back(static_cast<int>(closure_col_.size()));
   }
+  for (int k = 0; k < rows; ++k) {
+    left_width_ = std::max(left_width_, static_cast<int>(left_[k].size()));
+    right_width_ = std::max(right_width_, static_cast<int>(right_[k].size()));
+  }
+  left_block_.assign(std::size_t(rows) * left_width_, Real(0));
+  right_block_.assign(std::size_t(rows) * right_width_, Real(0));
+  for (int k = 0; k < rows; ++k) {
+    // Left row k: columns 0 … size − 1. Right block row k is row
+    // n − rows + k, whose entries end at column n − 1.
+    for (std::size_t j = 0; j < left_[k].size(); ++j)
+      left_block_[j * rows + k] = left_[k][j];
+    const auto& c = right_[rows - 1 - k];
+    const int skip = right_width_ - static_cast<int>(c.size());
+    for (std::size_t j = 0; j < c.size(); ++j)
+      right_block_[(skip + j) * rows + k] = c[j];
+  }
+}
+
+namespace detail {
+
+// out_k = s·Σ_j c_(j,k) (u_j − ui_k), k < rows, for one closure block
+// (column-major c, `width` columns): the rows' accumulators in registers
+// when R, the number of rows, is known at compile time (R = 0: `rows`).
+template <int R, int kMax, class Real>
+void SweepClosureBlock(const Real* c, int width, const Real* uc, const Real* ui,
+                       Real s, Real* out, int rows) {
+  const int r = R > 0 ? R : rows;
+  Real acc[kMax], at[kMax];
+  for (int k = 0; k < r; ++k) {
+    acc[k] = Real(0);
+    at[k] = ui[k];
+  }
+  for (int j = 0; j < width; ++j) {
+    const Real uj = uc[j];
+    for (int k = 0; k < r; ++k) acc[k] += c[j * r + k] * (uj - at[k]);
+  }
+  for (int k = 0; k < r; ++k) out[k] = s * acc[k];
+}
+
+}  // namespace detail
+
+template <class Real>
+void Operator<Real>::ApplyClosureBlocks(const Real* u, Real* out) const {
+  // A zero entry adds 0·(u_j − u_i) = ±0, which leaves every nonzero sum's
+  // bits as ClosureRow's (which skips it). The closures have 4, 6 or 8 rows
+  // (SBP42 … SBP84, lgl8 … lgl16); others take the loop with r at run time.
+  const int r = boundary_rows();
+  const auto sweep = [&](const Real* c, int width, const Real* uc,
+                         const Real* ui, Real* o) {
+    switch (r) {
+      case 4:
+        return detail::SweepClosureBlock<4, kMaxBlockRows>(c, width, uc, ui,
+                                                           inv_dt_, o, r);
+      case 6:
+        return detail::SweepClosureBlock<6, kMaxBlockRows>(c, width, uc, ui,
+                                                           inv_dt_, o, r);
+      case 8:
+        return detail::SweepClosureBlock<8, kMaxBlockRows>(c, width, uc, ui,
+                                                           inv_dt_, o, r);
+      default:
+        return detail::SweepClosureBlock<0, kMaxBlockRows>(c, width, uc, ui,
+                                                           inv_dt_, o, r);
+    }
+  };
+  sweep(left_block_.data(), left_width_, u, u, out);
+  sweep(right_block_.data(), right_width_, u + (n_ - right_width_),
+        u + (n_ - r), out + (n_ - r));
 }
 
 template <class Real>
@@ -101,7 +170,12 @@ template <class T>
 void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
   CheckSize(u.size(), out.size());
   const int r = boundary_rows();
-  for (int i = 0; i < r; ++i) out[i] = ClosureRow(i, i, u.data());
+  // Closures on plain numbers as blocks (ApplyClosureBlocks), else a row at
+  // a time.
+  bool blocks = false;
+  if constexpr (std::is_same_v<T, Real>) blocks = r <= kMaxBlockRows;
+  if (!blocks)
+    for (int i = 0; i < r; ++i) out[i] = ClosureRow(i, i, u.data());
   // Interior: the central stencil is antisymmetric (checked in the
   // constructor), Σ_k c_k (u_{i+k} − u_{i−k}), the difference form of
   // ApplyRow without the reference subtraction.
@@ -117,8 +191,12 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
       autodiff::AddScaled(o[i], c, T(uu[i + k] - uu[i - k]));
   }
   for (int i = r; i < n_ - r; ++i) o[i] = autodiff::Scaled(inv_dt_, o[i]);
-  for (int i = n_ - r; i < n_; ++i)
-    out[i] = ClosureRow(i - (n_ - 2 * r), i, u.data());
+  if (blocks) {
+    if constexpr (std::is_same_v<T, Real>) ApplyClosureBlocks(uu, o);
+  } else {
+    for (int i = n_ - r; i < n_; ++i)
+      out[i] = ClosureRow(i - (n_ - 2 * r), i, u.data());
+  }
 }
 
 template <class Real>

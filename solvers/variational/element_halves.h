@@ -58,9 +58,9 @@ class ElementHalves {
   double PositionRoundOff(int c) const { return roundoff_x_[c]; }
 
   // Solves the halves of `whole` (solved from `start` at t0, its nodes
-  // kept); false if one fails, that half then holding the failure.
+  // kept); if one fails, that half holds the failure and judged() names it.
   // `nodes`: keep the halves' nodes.
-  bool Solve(const WindowAttempt& whole, const InitialData& start, double t0,
+  void Solve(const WindowAttempt& whole, const InitialData& start, double t0,
              bool nodes) {
     const int d = whole.n;
     from_ = start;
@@ -72,12 +72,15 @@ class ElementHalves {
       a.dt = 0.5 * whole.dt;
       Interpolate(k, whole);
       if (!window_.Solve(a, t0 + 0.5 * whole.dt * double(k * (n_ - 1)), from_,
-                         px_, pv_, false, nodes))
-        return Slot(0), false;
+                         px_, pv_, false, nodes)) {
+        Slot(0);
+        return;
+      }
       if (std::string why = CheckFinite(a, window_.order()); !why.empty()) {
         a.failure = WindowFailure::kCheck;
         a.why = std::move(why);
-        return Slot(0), false;
+        Slot(0);
+        return;
       }
       const bool corrected = hand_off_ == HandOff::kCorrected;
       for (int c = 0; c < d; ++c) {
@@ -88,7 +91,6 @@ class ElementHalves {
     }
     Slot(0);
     Estimate(whole);
-    return true;
   }
 
  private:
