@@ -208,7 +208,7 @@ class Operator {
   // plain numbers: the sums then run column by column for all r rows at
   // once, each row's terms still added in the order of its columns, so the
   // bits are ClosureRow's, and the loop over the rows vectorizes. A spectral
-  // element is nothing but closure rows (lgl8: 8 rows of 7 entries): its
+  // element is nothing but closure rows (lgl8: 4 + 4 dense rows of 8): its
   // Apply took 650 instructions a row at a time, 440 as blocks, and a
   // residual applies D about five times (v = D̄x̄ and D̄ᵀHw per coordinate;
   // docs/performance.md §9).
