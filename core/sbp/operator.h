@@ -212,7 +212,6 @@ class Operator {
   // Apply took 650 instructions a row at a time, 440 as blocks, and a
   // residual applies D about five times (v = D̄x̄ and D̄ᵀHw per coordinate;
   // docs/performance.md §9).
-  static constexpr int kMaxBlockRows = 16;
   int left_width_ = 0, right_width_ = 0;
   std::vector<Real> left_block_, right_block_;
   void ApplyClosureBlocks(const Real* u, Real* out) const;

@@ -100,23 +100,34 @@ Operator<Real>::Operator(const Coefficients& table, int points, Real t_start,
 
 namespace detail {
 
-// out_k = s·Σ_j c_(j,k) (u_j − ui_k), k < rows, for one closure block
-// (column-major c, `width` columns): the rows' accumulators in registers
-// when R, the number of rows, is known at compile time (R = 0: `rows`).
-template <int R, int kMax, class Real>
+// out_k = s·Σ_j c_(j,k) (u_j − ui_k), k < R, for one closure block
+// (column-major c, `width` columns) of R rows, R known at compile time: the
+// rows' accumulators in registers, and the loop over them vectorizes.
+template <int R, class Real>
 void SweepClosureBlock(const Real* c, int width, const Real* uc, const Real* ui,
-                       Real s, Real* out, int rows) {
-  const int r = R > 0 ? R : rows;
-  Real acc[kMax], at[kMax];
-  for (int k = 0; k < r; ++k) {
+                       Real s, Real* out) {
+  Real acc[R], at[R];
+  for (int k = 0; k < R; ++k) {
     acc[k] = Real(0);
     at[k] = ui[k];
   }
   for (int j = 0; j < width; ++j) {
     const Real uj = uc[j];
-    for (int k = 0; k < r; ++k) acc[k] += c[j * r + k] * (uj - at[k]);
+    for (int k = 0; k < R; ++k) acc[k] += c[j * R + k] * (uj - at[k]);
   }
-  for (int k = 0; k < r; ++k) out[k] = s * acc[k];
+  for (int k = 0; k < R; ++k) out[k] = s * acc[k];
+}
+
+// The same for any number of rows r, a row at a time: each row's terms in
+// the same order, so the same bits.
+template <class Real>
+void SweepClosureRows(const Real* c, int r, int width, const Real* uc,
+                      const Real* ui, Real s, Real* out) {
+  for (int k = 0; k < r; ++k) {
+    Real acc(0);
+    for (int j = 0; j < width; ++j) acc += c[j * r + k] * (uc[j] - ui[k]);
+    out[k] = s * acc;
+  }
 }
 
 }  // namespace detail
@@ -125,23 +136,20 @@ template <class Real>
 void Operator<Real>::ApplyClosureBlocks(const Real* u, Real* out) const {
   // A zero entry adds 0·(u_j − u_i) = ±0, which leaves every nonzero sum's
   // bits as ClosureRow's (which skips it). The closures have 4, 6 or 8 rows
-  // (SBP42 … SBP84, lgl8 … lgl16); others take the loop with r at run time.
+  // (SBP42 … SBP84, lgl8 … lgl16); any other count is summed a row at a
+  // time (SweepClosureRows).
   const int r = boundary_rows();
   const auto sweep = [&](const Real* c, int width, const Real* uc,
                          const Real* ui, Real* o) {
     switch (r) {
       case 4:
-        return detail::SweepClosureBlock<4, kMaxBlockRows>(c, width, uc, ui,
-                                                           inv_dt_, o, r);
+        return detail::SweepClosureBlock<4>(c, width, uc, ui, inv_dt_, o);
       case 6:
-        return detail::SweepClosureBlock<6, kMaxBlockRows>(c, width, uc, ui,
-                                                           inv_dt_, o, r);
+        return detail::SweepClosureBlock<6>(c, width, uc, ui, inv_dt_, o);
       case 8:
-        return detail::SweepClosureBlock<8, kMaxBlockRows>(c, width, uc, ui,
-                                                           inv_dt_, o, r);
+        return detail::SweepClosureBlock<8>(c, width, uc, ui, inv_dt_, o);
       default:
-        return detail::SweepClosureBlock<0, kMaxBlockRows>(c, width, uc, ui,
-                                                           inv_dt_, o, r);
+        return detail::SweepClosureRows(c, r, width, uc, ui, inv_dt_, o);
     }
   };
   sweep(left_block_.data(), left_width_, u, u, out);
@@ -172,9 +180,8 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
   const int r = boundary_rows();
   // Closures on plain numbers as blocks (ApplyClosureBlocks), else a row at
   // a time.
-  bool blocks = false;
-  if constexpr (std::is_same_v<T, Real>) blocks = r <= kMaxBlockRows;
-  if (!blocks)
+  constexpr bool blocks = std::is_same_v<T, Real>;
+  if constexpr (!blocks)
     for (int i = 0; i < r; ++i) out[i] = ClosureRow(i, i, u.data());
   // Interior: the central stencil is antisymmetric (checked in the
   // constructor), Σ_k c_k (u_{i+k} − u_{i−k}), the difference form of
@@ -191,8 +198,8 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
       autodiff::AddScaled(o[i], c, T(uu[i + k] - uu[i - k]));
   }
   for (int i = r; i < n_ - r; ++i) o[i] = autodiff::Scaled(inv_dt_, o[i]);
-  if (blocks) {
-    if constexpr (std::is_same_v<T, Real>) ApplyClosureBlocks(uu, o);
+  if constexpr (blocks) {
+    ApplyClosureBlocks(uu, o);
   } else {
     for (int i = n_ - r; i < n_; ++i)
       out[i] = ClosureRow(i - (n_ - 2 * r), i, u.data());
