@@ -118,26 +118,14 @@ void SweepClosureBlock(const Real* c, int width, const Real* uc, const Real* ui,
   for (int k = 0; k < R; ++k) out[k] = s * acc[k];
 }
 
-// The same for any number of rows r, a row at a time: each row's terms in
-// the same order, so the same bits.
-template <class Real>
-void SweepClosureRows(const Real* c, int r, int width, const Real* uc,
-                      const Real* ui, Real s, Real* out) {
-  for (int k = 0; k < r; ++k) {
-    Real acc(0);
-    for (int j = 0; j < width; ++j) acc += c[j * r + k] * (uc[j] - ui[k]);
-    out[k] = s * acc;
-  }
-}
-
 }  // namespace detail
 
 template <class Real>
 void Operator<Real>::ApplyClosureBlocks(const Real* u, Real* out) const {
   // A zero entry adds 0·(u_j − u_i) = ±0, which leaves every nonzero sum's
   // bits as ClosureRow's (which skips it). The closures have 4, 6 or 8 rows
-  // (SBP42 … SBP84, lgl8 … lgl16); any other count is summed a row at a
-  // time (SweepClosureRows).
+  // (SBP42 … SBP84, lgl8 … lgl16), the counts Apply sends here (any other
+  // is summed a row at a time, ClosureRow).
   const int r = boundary_rows();
   const auto sweep = [&](const Real* c, int width, const Real* uc,
                          const Real* ui, Real* o) {
@@ -148,8 +136,6 @@ void Operator<Real>::ApplyClosureBlocks(const Real* u, Real* out) const {
         return detail::SweepClosureBlock<6>(c, width, uc, ui, inv_dt_, o);
       case 8:
         return detail::SweepClosureBlock<8>(c, width, uc, ui, inv_dt_, o);
-      default:
-        return detail::SweepClosureRows(c, r, width, uc, ui, inv_dt_, o);
     }
   };
   sweep(left_block_.data(), left_width_, u, u, out);
@@ -178,10 +164,11 @@ template <class T>
 void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
   CheckSize(u.size(), out.size());
   const int r = boundary_rows();
-  // Closures on plain numbers as blocks (ApplyClosureBlocks), else a row at
-  // a time.
-  constexpr bool blocks = std::is_same_v<T, Real>;
-  if constexpr (!blocks)
+  // Closures on plain numbers as blocks (ApplyClosureBlocks) where they
+  // have 4, 6 or 8 rows, else a row at a time.
+  bool blocks = false;
+  if constexpr (std::is_same_v<T, Real>) blocks = r == 4 || r == 6 || r == 8;
+  if (!blocks)
     for (int i = 0; i < r; ++i) out[i] = ClosureRow(i, i, u.data());
   // Interior: the central stencil is antisymmetric (checked in the
   // constructor), Σ_k c_k (u_{i+k} − u_{i−k}), the difference form of
@@ -198,8 +185,8 @@ void Operator<Real>::Apply(std::span<const T> u, std::span<T> out) const {
       autodiff::AddScaled(o[i], c, T(uu[i + k] - uu[i - k]));
   }
   for (int i = r; i < n_ - r; ++i) o[i] = autodiff::Scaled(inv_dt_, o[i]);
-  if constexpr (blocks) {
-    ApplyClosureBlocks(uu, o);
+  if (blocks) {
+    if constexpr (std::is_same_v<T, Real>) ApplyClosureBlocks(uu, o);
   } else {
     for (int i = n_ - r; i < n_; ++i)
       out[i] = ClosureRow(i - (n_ - 2 * r), i, u.data());
