@@ -136,11 +136,14 @@ class WindowEngine {
     // the next one starts with its own. When the first stale start after
     // such fresh windows is wasted again, the next fresh_run_ windows start
     // with their own, the run doubling each time (4, 8, 16 …, at most 64)
-    // until a stale start pays. A factorization older than one window that
-    // fails or slows is just renewed: marches that reuse one over many
-    // windows (Kepler e = 0.9 on a uniform grid: 3 factorizations in 349
-    // windows) lost up to 2 % when any failure triggered fresh windows
-    // (callgrind, 28 November).
+    // until a stale start pays. A factorization older than one window is
+    // renewed only by Newton itself, when its chord steps stop contracting:
+    // marches that reuse one over many windows (Kepler e = 0.9 on a uniform
+    // grid: 3 factorizations in 349 windows) lost up to 2 % when any
+    // failure triggered fresh windows (callgrind, 28 November), and renewing
+    // one whose chord steps merely took more than kSlowChords corrections
+    // gained 2.5 % in geometric mean on lgl8 halves and cost up to 8 % on
+    // SBP windows (docs/performance.md §9).
     // Measured in time (docs/performance.md §2): on the anharmonic
     // oscillator a window's Jacobian moves so far that chord steps on the
     // last one took 6.6 corrections where a fresh start takes 2.
