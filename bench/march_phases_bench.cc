@@ -158,6 +158,7 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
   u.phase_timings = true;
   u.keep_trajectory = trajectory;
   u.stabilize = false;
+  const Grid adaptive_grid = grid;
   grid.points = adaptive.result.points;
   const Run uniform =
       Median([&] { return problem.march(grid, u, {}); }, repeats);
@@ -168,13 +169,11 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
   if (!uniform.result.status.converged) return std::nullopt;
   MarchOptions oa = o, ou = u;
   oa.phase_timings = ou.phase_timings = false;
-  Grid ga = grid;
-  ga.points = Grid{}.points;
   char name[160];
   std::snprintf(name, sizeof name, "%s, t = %.4g, %s, %.0e",
                 row.problem.c_str(), row.t_end, row.op.c_str(), row.tol);
   return Untimed(
-      name, [&] { return problem.march(ga, oa, {}); },
+      name, [&] { return problem.march(adaptive_grid, oa, {}); },
       [&] { return problem.march(grid, ou, {}); }, repeats);
 }
 

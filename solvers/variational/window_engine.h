@@ -142,8 +142,9 @@ class WindowEngine {
     // grid: 3 factorizations in 349 windows) lost up to 2 % when any
     // failure triggered fresh windows (callgrind, 28 November), and renewing
     // one whose chord steps merely took more than kSlowChords corrections
-    // gained 2.5 % in geometric mean on lgl8 halves and cost up to 8 % on
-    // SBP windows (docs/performance.md §9).
+    // gained 2.5 % in geometric mean on the anharmonic oscillator's lgl8
+    // halves, nothing on Kepler's, and cost up to 8 % on SBP windows
+    // (docs/performance.md §9).
     // Measured in time (docs/performance.md §2): on the anharmonic
     // oscillator a window's Jacobian moves so far that chord steps on the
     // last one took 6.6 corrections where a fresh start takes 2.
