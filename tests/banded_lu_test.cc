@@ -1,6 +1,7 @@
 // The banded LU of a window's Newton (solvers/variational/banded_lu.h)
 // against LAPACK's, and the window engine's solver that keeps a
-// factorization's inverse for many chord steps (step_scaled_lu.h).
+// factorization's inverse for many chord steps (step_scaled_lu.h); the
+// mass solve of each window's multiplier-corrected end (end_state.h).
 #define BOOST_TEST_MODULE banded_lu
 #include "solvers/variational/banded_lu.h"
 
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/linalg/banded.h"
+#include "solvers/variational/end_state.h"
 #include "solvers/variational/step_scaled_lu.h"
 
 // LAPACK's banded LU, the reference of BandedSubstitution_EqualsLapack.
@@ -134,4 +136,47 @@ BOOST_AUTO_TEST_CASE(StepScaledLu_InverseForManySolves) {
       BOOST_TEST(residual <= 4 * n * 2.2e-16 * norm * size);
     }
   }
+}
+
+// MassSolve: M⁻¹b by the closed-form inverse up to four coordinates, within
+// a few ε·cond(M) of the full-pivoting LU it replaced; exact for M = I; a
+// mass too close to singular for the cofactors takes the LU itself (the same
+// bits).
+template <int d>
+void CheckMassSolve(std::mt19937& rng) {
+  using Mat = Eigen::Matrix<double, d, d>;
+  using Vec = Eigen::Matrix<double, d, 1>;
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto random_vec = [&] {
+    Vec v;
+    for (int i = 0; i < d; ++i) v[i] = u(rng);
+    return v;
+  };
+  double worst = 0;
+  for (int draw = 0; draw < 200; ++draw) {
+    Mat a;
+    for (int i = 0; i < d; ++i) a.col(i) = random_vec();
+    const Mat m = a * a.transpose() + 0.1 * Mat::Identity();  // a mass
+    const Vec b = random_vec();
+    const Vec x = variational::MassSolve<double, d>(m)(b);
+    const Vec ref = m.fullPivLu().solve(b);
+    const double cond = m.norm() * m.inverse().norm();
+    worst = std::max(worst, (x - ref).cwiseAbs().maxCoeff() /
+                                (cond * ref.cwiseAbs().maxCoeff()));
+  }
+  BOOST_TEST_MESSAGE("d = " << d << ": |x - x_LU| / (cond |x|) " << worst);
+  BOOST_TEST(worst <= 16 * 2.2e-16);
+  const Vec b = random_vec();
+  BOOST_TEST((variational::MassSolve<double, d>(Mat::Identity())(b) == b));
+  const Mat singular = d == 1 ? Mat::Zero() : Mat::Ones();
+  BOOST_TEST((variational::MassSolve<double, d>(singular)(b) ==
+              Vec(singular.fullPivLu().solve(b))));
+}
+
+BOOST_AUTO_TEST_CASE(MassSolve_ClosedFormAgreesWithLu) {
+  std::mt19937 rng(5);
+  CheckMassSolve<1>(rng);
+  CheckMassSolve<2>(rng);
+  CheckMassSolve<3>(rng);
+  CheckMassSolve<4>(rng);
 }

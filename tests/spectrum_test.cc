@@ -178,3 +178,33 @@ BOOST_AUTO_TEST_CASE(LargestGeneralizedEigenvalue_TwoCoordinates) {
   k << 2, 0, 0, 3;
   BOOST_TEST(LargestGeneralizedEigenvalue(k, singular) == general(k, singular));
 }
+
+// The closed forms on fixed-size blocks (as the step control asks, without
+// the heap) give the same bits as through dynamic matrices.
+BOOST_AUTO_TEST_CASE(LargestOfFew_FixedSizeSameBits) {
+  using vivp::linalg::LargestGeneralizedEigenvalue;
+  using vivp::linalg::LargestOfFew;
+  std::srand(11);
+  int compared = 0;
+  for (int draw = 0; draw < 500; ++draw) {
+    const Eigen::Matrix2d k = Eigen::Matrix2d::Random();
+    const Eigen::Matrix2d m = Eigen::Matrix2d::Random();
+    double fixed = -1;
+    BOOST_REQUIRE(LargestOfFew(k, m, fixed));
+    BOOST_TEST(fixed == LargestGeneralizedEigenvalue(k, m));
+    const Eigen::Matrix<double, 1, 1> k1 = k.topLeftCorner<1, 1>();
+    const Eigen::Matrix<double, 1, 1> m1 = m.topLeftCorner<1, 1>();
+    BOOST_REQUIRE(LargestOfFew(k1, m1, fixed));
+    BOOST_TEST(fixed == LargestGeneralizedEigenvalue(k1, m1));
+    compared += 2;
+  }
+  BOOST_TEST(compared == 1000);
+  // No closed form: three coordinates, a zero 1 × 1 mass, a singular 2 × 2.
+  double unused = 0;
+  BOOST_TEST(!LargestOfFew(Eigen::Matrix3d::Identity().eval(),
+                           Eigen::Matrix3d::Identity().eval(), unused));
+  BOOST_TEST(!LargestOfFew(Eigen::Matrix<double, 1, 1>::Ones().eval(),
+                           Eigen::Matrix<double, 1, 1>::Zero().eval(), unused));
+  BOOST_TEST(!LargestOfFew(Eigen::Matrix2d::Identity().eval(),
+                           Eigen::Matrix2d::Ones().eval(), unused));
+}

@@ -26,16 +26,26 @@ inline double StabilityLimit(std::string_view op) {
   return sbp::Table(op).measured.stability_limit;
 }
 
-// The largest ω with ω² an eigenvalue of M⁻¹K at (x, v); 0 when the problem
-// has no oscillation there (K ≤ 0, or a first-order system with M = 0).
+// The largest ω with ω² an eigenvalue of M⁻¹K, from the Hessian of L in
+// (x, v) at a point (M its velocity block, K minus its position block); 0
+// when the problem has no oscillation there (K ≤ 0, or a first-order system
+// with M = 0). One and two coordinates in closed form on the blocks as they
+// are (linalg::LargestOfFew), without the heap.
+template <class Hessian>
+double FastestFrequencyOf(const Hessian& h) {
+  constexpr int d = Hessian::RowsAtCompileTime / 2;
+  const Eigen::Matrix<double, d, d> m = h.template bottomRightCorner<d, d>();
+  const Eigen::Matrix<double, d, d> k = -h.template topLeftCorner<d, d>();
+  if (m.cwiseAbs().maxCoeff() == 0.0) return 0.0;
+  if (double largest; linalg::LargestOfFew(k, m, largest))
+    return std::sqrt(largest);
+  return std::sqrt(linalg::LargestGeneralizedEigenvalue(k, m));
+}
+
+// The same at (x, v).
 template <class P>
 double FastestFrequency(const P& problem, const double* x, const double* v) {
-  constexpr int d = P::kDim;
-  const auto h = action::LagrangianHessian(problem, x, v);
-  const Eigen::MatrixXd m = h.template bottomRightCorner<d, d>();
-  const Eigen::MatrixXd k = -h.template topLeftCorner<d, d>();
-  if (m.cwiseAbs().maxCoeff() == 0.0) return 0.0;
-  return std::sqrt(linalg::LargestGeneralizedEigenvalue(k, m));
+  return FastestFrequencyOf(action::LagrangianHessian(problem, x, v));
 }
 
 }  // namespace vivp::variational
