@@ -56,8 +56,9 @@ class MassSolve {
   explicit MassSolve(const Mat& m) {
     if constexpr (d <= 4) {
       // |det M| against the size of its entries to the power d.
+      const Real scale = m.cwiseAbs().maxCoeff();
       Real threshold(1e-12);
-      for (int i = 0; i < d; ++i) threshold *= m.cwiseAbs().maxCoeff();
+      for (int i = 0; i < d; ++i) threshold *= scale;
       bool invertible = false;
       m.computeInverseWithCheck(inverse_, invertible, threshold);
       closed_ = invertible && inverse_.allFinite();
