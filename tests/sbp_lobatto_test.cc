@@ -310,6 +310,30 @@ BOOST_DATA_TEST_CASE(error_control_estimate_bounds_every_element_s_error,
   BOOST_TEST(checked >= 8, op << ": " << checked << " errors checked");
 }
 
+BOOST_AUTO_TEST_CASE(whole_elements_are_accounted_apart_in_the_phases) {
+  // Under error control an element is solved whole (for the halves'
+  // estimate and start) and as two halves. With phase timings the whole
+  // elements' solves are reported apart (MarchPhases::whole_elements, the
+  // share bench/march_phases_bench takes out of the per-node ratio): a part
+  // of the solve phases, which a finite-difference window does not have.
+  const problems::Anharmonic anharmonic;
+  for (const char* op : {"lgl8", "sbp84"}) {
+    variational::MarchOptions o;
+    o.tolerance = {1e-8, 1e-8};
+    o.phase_timings = true;
+    const variational::Grid g{.op = op, .t_end = 10.0};
+    const auto m = variational::MarchIvp(anharmonic, {{1.0}, {0.3}}, g, o);
+    BOOST_TEST_REQUIRE(m.status.converged, m.status.reason);
+    const variational::MarchPhases& p = m.phases;
+    if (sbp::IsElement(op)) {
+      BOOST_TEST(p.whole_elements > 0.0);
+      BOOST_TEST(p.whole_elements < p.Solving());
+    } else {
+      BOOST_TEST(p.whole_elements == 0.0);
+    }
+  }
+}
+
 BOOST_DATA_TEST_CASE(error_control_end_error_follows_the_tolerance,
                      bdata::make(Elements()), op) {
   // Kepler e = 0.9 over three orbits, tolerances 1e-6 … 1e-10: the end

@@ -135,7 +135,10 @@ const std::vector<const Coefficients*>& ElementOperators() {
   // control keeps elements long (up to half a period), where the slope of
   // the difference against the step, from one state at pericentre of
   // Kepler e = 0.9 and on the anharmonic oscillator, measured 9–15 for all
-  // three between sign changes of the error; 10, the lower end. Not
+  // three between sign changes of the error; 10, the lower end. A larger
+  // q, nearer the slope between a rejected pair and its retry (median
+  // 19–21), saved rejections at moderate tolerances but stalled marches
+  // where the estimate is at round-off (docs/performance.md §9). Not
   // measured for elements: Levenberg–Marquardt windows and fields.
   static const std::vector<Coefficients> tables = [] {
     std::vector<Coefficients> t{Element("lgl8", 8), Element("lgl12", 12),

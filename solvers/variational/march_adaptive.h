@@ -44,9 +44,12 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       // steps on it failed or crawled (Kepler e = 0.9 over three orbits,
       // lgl8 at 10⁻⁹ … 10⁻¹²: 2 fallbacks and 1 check failure to none, time
       // −5 … −30 %).
+      const double solving = out_.phases.Solving();
       Attempt* a =
           &this->Solve(attempt_, state, t, w.points, w.dt, bool(halves_),
                        PredictorTolerance(), false, bool(halves_));
+      if (halves_)
+        out_.phases.whole_elements += out_.phases.Solving() - solving;
       if (a->ok() && doubling) {
         Doubled(state, t, *a, fine_);
         std::swap(attempt_, fine_);  // a (attempt_) is now the fine window

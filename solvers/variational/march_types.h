@@ -41,6 +41,14 @@ struct MarchPhases {
   double checks = 0;  // the a-posteriori checks (window_checks.h)
   double total = 0;   // the whole march; total − the rest is the step
                       // control, acceptance, node copies and allocation
+  // Of setup … end above: the spectral elements' whole elements, which
+  // step doubling solves only for its estimate and the halves' start
+  // (element_halves.h); 0 for other operators.
+  double whole_elements = 0;
+  // The solve itself: setup, Newton's phases and the end state.
+  double Solving() const {
+    return setup + residual + assembly + factorization + solve + end;
+  }
   MarchPhases &operator+=(const MarchPhases &o) {
     predictor += o.predictor;
     setup += o.setup;
@@ -50,6 +58,7 @@ struct MarchPhases {
     solve += o.solve;
     end += o.end;
     checks += o.checks;
+    whole_elements += o.whole_elements;
     return *this;
   }
 };
