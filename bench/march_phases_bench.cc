@@ -21,6 +21,9 @@
 // The last table gives that whole element's share of the (timed) adaptive
 // march and the ratio without it, which separates the estimator's own
 // solve from the rest of the machinery (predictor, rejections, checks).
+// An OP of lgl8_embedded (lgl12_, lgl16_) marches the element under error
+// control by its own end-node estimates instead (ElementEstimate::
+// kEmbedded): one solve per element, as a finite-difference window.
 //
 // Usage: march_phases_bench [--repeats R] [--window W] [--trajectory]
 // [PROBLEM T_END OP TOL ...]
@@ -142,13 +145,18 @@ void Print(const char* kind, double tol, const Run& run, double error) {
 std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
                             bool trajectory) {
   const studies::NamedProblem& problem = studies::FindProblem(row.problem);
+  // OP_embedded: a spectral element under error control by its own
+  // end-node estimates (MarchOptions::element_estimate), one solve each.
+  std::string op = row.op;
+  const bool embedded = op.ends_with("_embedded");
+  if (embedded) op.resize(op.size() - std::string("_embedded").size());
   // A spectral element's window is the element.
   const long long window =
-      sbp::IsElement(row.op)
-          ? DefaultWindowPoints(Path::kReducedNewton, row.op, true)
-          : chosen;
-  Grid grid{.op = row.op, .t_start = 0.0, .t_end = row.t_end};
+      sbp::IsElement(op) ? DefaultWindowPoints(Path::kReducedNewton, op, true)
+                         : chosen;
+  Grid grid{.op = op, .t_start = 0.0, .t_end = row.t_end};
   MarchOptions o;
+  if (embedded) o.element_estimate = ElementEstimate::kEmbedded;
   o.window_points = window;
   o.phase_timings = true;
   o.keep_trajectory = trajectory;

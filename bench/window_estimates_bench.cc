@@ -17,6 +17,8 @@
 // window is a half of an element solved whole and halved, and its estimate
 // that of the halves' hand-off (solvers/variational/element_halves.h), so
 // only the last two columns apply.
+// Rows "emb": the elements under error control by their own end-node
+// estimates (ElementEstimate::kEmbedded), every column applies.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -70,7 +72,8 @@ struct Ratios {
 
 template <class P>
 void Collect(const P& problem, const vivp::variational::InitialData& init,
-             double t_end, const std::string& op, bool tolerance, Ratios& r) {
+             double t_end, const std::string& op, bool tolerance, bool embedded,
+             Ratios& r) {
   constexpr int d = P::kDim;
   Predictor<P> exact(problem, 2);
   vivp::variational::MarchOptions o;
@@ -78,6 +81,8 @@ void Collect(const P& problem, const vivp::variational::InitialData& init,
   o.stabilize = false;
   const double level = Level(op);
   if (tolerance) o.tolerance = {level, level};
+  if (embedded)
+    o.element_estimate = vivp::variational::ElementEstimate::kEmbedded;
   o.window_observer = [&](const vivp::variational::WindowSample& s) {
     std::vector<double> tau(s.points), xs(s.points * d), vs(s.points * d);
     for (int i = 0; i < s.points; ++i) tau[i] = s.dt * double(i);
@@ -153,18 +158,25 @@ int main(int argc, char** argv) {
     ops.emplace_back(e->name);
   for (const std::string& name : ops) {
     const char* op = name.c_str();
-    for (bool tolerance : {false, true}) {
+    // A spectral element also under error control by its own end-node
+    // estimates (ElementEstimate::kEmbedded), where every column applies.
+    const int kinds = vivp::sbp::IsElement(name) ? 3 : 2;
+    for (int kind = 0; kind < kinds; ++kind) {
+      const bool tolerance = kind > 0, embedded = kind == 2;
       const std::string march =
           !tolerance
               ? "uniform"
-              : "tol 1e-" +
+              : (embedded ? "emb 1e-" : "tol 1e-") +
                     std::to_string(std::lround(-std::log10(Level(name))));
       Ratios a, p, k6, k9, all;
-      Collect(problems::Anharmonic{}, {{1.0}, {0.3}}, 10.0, op, tolerance, a);
-      Collect(problems::Pendulum{}, {{0.0}, {1.0}}, 20.0, op, tolerance, p);
-      Collect(e06, {{0.4, 0.0}, {0.0, 2.0}}, 10 * M_PI, op, tolerance, k6);
+      Collect(problems::Anharmonic{}, {{1.0}, {0.3}}, 10.0, op, tolerance,
+              embedded, a);
+      Collect(problems::Pendulum{}, {{0.0}, {1.0}}, 20.0, op, tolerance,
+              embedded, p);
+      Collect(e06, {{0.4, 0.0}, {0.0, 2.0}}, 10 * M_PI, op, tolerance, embedded,
+              k6);
       Collect(e09, {{0.1, 0.0}, {0.0, std::sqrt(19.0)}}, 2 * M_PI, op,
-              tolerance, k9);
+              tolerance, embedded, k9);
       Row(op, march.c_str(), "anharmonic", a);
       Row(op, march.c_str(), "pendulum", p);
       Row(op, march.c_str(), "kepler 0.6", k6);

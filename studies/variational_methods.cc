@@ -22,11 +22,15 @@ namespace vivp::studies {
 namespace {
 
 // A method name: variational_sbpXY (its knob a tolerance, like dopri5's) or
-// variational_sbpXY_uniform (its knob a step count).
+// variational_sbpXY_uniform (its knob a step count); a spectral element also
+// variational_lglN_embedded, under error control by its own end-node
+// estimates instead of its halves (MarchOptions::element_estimate).
 constexpr std::string_view kUniform = "_uniform";
+constexpr std::string_view kEmbedded = "_embedded";
 std::string Operator(const std::string& method) {
   std::string op = method.substr(std::string("variational_").size());
-  if (op.ends_with(kUniform)) op.resize(op.size() - kUniform.size());
+  for (std::string_view kind : {kUniform, kEmbedded})
+    if (op.ends_with(kind)) op.resize(op.size() - kind.size());
   return op;
 }
 bool Adaptive(const std::string& method) { return !method.ends_with(kUniform); }
@@ -60,6 +64,8 @@ variational::MarchResult March(const NamedProblem& p, const std::string& method,
   o.window_points = MethodWindow(method);
   if (Adaptive(method)) {
     o.tolerance = {knob, knob};
+    if (method.ends_with(kEmbedded))
+      o.element_estimate = variational::ElementEstimate::kEmbedded;
   } else {
     g.points = static_cast<long long>(knob) + 1;
     // A spectral element marches whole elements of n − 1 steps: the count
@@ -225,14 +231,16 @@ BenchProblem DampedBenchProblem() {
 void RegisterVariationalMethods() {
   static const bool registered = [] {
     // Every operator under error control and uniform: the finite-difference
-    // operators and the spectral elements.
+    // operators and the spectral elements, these also under error control
+    // by their embedded estimates.
     std::vector<std::string> names;
     std::vector<std::string> ops = sbp::OperatorNames();
-    for (const sbp::Coefficients* e : sbp::ElementOperators())
-      ops.emplace_back(e->name);
     for (const std::string& op : ops)
       for (const std::string kind : {"", "_uniform"})
         names.push_back("variational_" + op + kind);
+    for (const sbp::Coefficients* e : sbp::ElementOperators())
+      for (const std::string kind : {"", "_uniform", "_embedded"})
+        names.push_back("variational_" + std::string(e->name) + kind);
     for (const std::string& name : names)
       RegisterExternalMethod(
           name,

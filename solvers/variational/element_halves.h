@@ -8,11 +8,19 @@
 // element is of order about n in its length, while the state it hands on
 // converges with order 2n − 2 (docs/method.md §13), set by elementary
 // differentials of order 2n − 1 of the flow that nothing of degree n − 1 on
-// one element observes. Tried and not kept: the same integrals of ∂L/∂x
+// one element observes. (ElementEstimate::kEmbedded controls by those
+// estimates all the same, for a tolerance on every node rather than on the
+// hand-off: march_types.h.) Tried and not kept: the same integrals of ∂L/∂x
 // along the element's polynomial by the n-point Gauss rule against the
 // Lobatto rule, with the collocation defect carried through the linearized
 // flow — 2–30 times below the true local error on the anharmonic
 // oscillator, the ratio not tending to 1 as the step shrank.
+//
+// Why halves and not thirds (four solves per three kept, not three per
+// two): their marches took 25–45 % more nodes for end errors 10–100 times
+// smaller, and neither the time at equal end error nor the price per node
+// against the uniform march fell (docs/performance.md §9, "Step doubling's
+// floor").
 //
 // The halves need no predictor: the whole element's polynomial at their
 // nodes is a start within its own error, and the whole element was checked

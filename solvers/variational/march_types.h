@@ -14,6 +14,17 @@ namespace vivp::variational {
 
 enum class HandOff { kCorrected, kNaive };
 
+// How error control estimates a spectral element's error
+// (docs/error_control.md, "Spectral elements"):
+// - kHalves: step doubling — the element whole and as two halves, which
+//   are kept; the tolerance bounds each hand-off's local error (order
+//   2n − 1), three element solves per two kept.
+// - kEmbedded: the element's own end-node estimates, as a finite-difference
+//   window's — the tolerance bounds the local error of every node it
+//   returns (the end node's, of order about n), one solve per element; the
+//   hand-off, of order 2n − 1, ends far below the tolerance.
+enum class ElementEstimate { kHalves, kEmbedded };
+
 // One accepted window as seen by a WindowObserver: where it started, its end
 // node (x_N, (Dx)_N), the state it hands off and its embedded estimates, per
 // component (d values each; velocities empty for a first-order system).
@@ -90,6 +101,9 @@ struct MarchOptions {
   // used, and the nodes are not uniform in time. Disabled: the uniform grid
   // of grid.points nodes.
   Tolerance tolerance;
+  // Error control on a spectral element: step doubling or its embedded
+  // estimates (ElementEstimate above).
+  ElementEstimate element_estimate = ElementEstimate::kHalves;
   // Error control: the first window's Δt; 0 chooses it from the fastest
   // frequency of the initial state.
   double initial_step = 0;
