@@ -111,7 +111,7 @@ BOOST_DATA_TEST_CASE(embedded_estimates_bound_every_element_s_nodes,
   // Under ElementEstimate::kEmbedded the element is solved once and its
   // end node's estimates, as a finite-difference window's, set the step:
   // they are those of the end node (x_N, (Dx)_N; its errors measured
-  // 0.91–1.04 times them here), and the hand-off, of order 2n − 1, is
+  // 0.91–1.05 times them here), and the hand-off, of order 2n − 1, is
   // within them (measured at most 0.09 of them here; 0.5 in
   // bench/window_estimates_bench, lgl12 on the anharmonic oscillator at
   // 1e-8). Round-off errors left out.

@@ -35,7 +35,11 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     if (element && options_.element_estimate == ElementEstimate::kHalves)
       halves_.emplace(window_, grid_.op, options_.hand_off);
     const bool doubling = !element && !table.measured.position_estimate;
-    StepController control(EstimateOrder(grid_.op));
+    // An element under its own estimates with the predictive term
+    // (step_control.h): approaching pericentre of Kepler e = 0.9 its error
+    // rose 12–18-fold from one element to the next at the same step, and
+    // every other element was rejected without it.
+    StepController control(EstimateOrder(grid_.op), element && !halves_);
     double t = grid_.t_start;
     double dt = InitialStep(state);
     int rejected_in_row = 0;
@@ -80,7 +84,7 @@ class AdaptiveMarch : public MarchCore<WindowT> {
         AcceptWindow(*a, state, t, t1, w.last, err);
       }
       t = t1;
-      dt = control.Accept(w.dt, err);
+      dt = control.Accept(w.dt, err, AtRoundOff(state, *a));
     }
     return true;
   }
@@ -249,15 +253,18 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     return err;
   }
 
-  // Why a rejected window's error is round-off: its largest term is a
-  // velocity estimate within twice the round-off level of (Dx)_N (an
-  // element's: the difference of its halves within twice theirs, position
-  // or velocity); "" if not.
-  std::string RoundOffBound(const InitialData& state, const Attempt& a) const {
-    if (order_ != 2) return "";
-    const Tolerance& tol = options_.tolerance;
-    double worst = 0, est = 0, level = 0, allowance = 0;
+  // The term of a window's error norm that is largest against its
+  // allowance: its estimate, that estimate's round-off level (the
+  // velocity's of (Dx)_N, an element's difference of halves; 0 for a
+  // finite-difference window's position) and the allowance.
+  struct Term {
     bool velocity = false;
+    double est = 0, level = 0, allowance = 0;
+  };
+  Term LargestTerm(const InitialData& state, const Attempt& a) const {
+    const Tolerance& tol = options_.tolerance;
+    Term t;
+    double worst = 0;
     const int d = d_;
     for (int c = 0; c < d; ++c) {
       const double ax = tol.Allowance(
@@ -266,31 +273,44 @@ class AdaptiveMarch : public MarchCore<WindowT> {
           std::max(std::abs(state.v[c]), std::abs(a.end.velocity[c])));
       if (a.est_x[c] / ax > worst) {
         worst = a.est_x[c] / ax;
-        velocity = false;
-        est = a.est_x[c];
-        level = halves_ ? halves_->PositionRoundOff(c) : 0.0;
-        allowance = ax;
+        t = {false, a.est_x[c], halves_ ? halves_->PositionRoundOff(c) : 0.0,
+             ax};
       }
       if (a.est_v[c] / av > worst) {
         worst = a.est_v[c] / av;
-        velocity = true;
-        est = a.est_v[c];
-        level = a.roundoff_v[c];
-        allowance = av;
+        t = {true, a.est_v[c], a.roundoff_v[c], av};
       }
     }
-    if (!(velocity || halves_) || !(est <= 2 * level)) return "";
+    return t;
+  }
+
+  // Whether a window's largest term is within 8 times its round-off level
+  // (the step controller's predictive term then sits out).
+  bool AtRoundOff(const InitialData& state, const Attempt& a) const {
+    if (order_ != 2) return false;
+    const Term t = LargestTerm(state, a);
+    return t.est <= 8 * t.level;
+  }
+
+  // Why a rejected window's error is round-off: its largest term is a
+  // velocity estimate within twice the round-off level of (Dx)_N (an
+  // element's: the difference of its halves within twice theirs, position
+  // or velocity); "" if not.
+  std::string RoundOffBound(const InitialData& state, const Attempt& a) const {
+    if (order_ != 2) return "";
+    const Term t = LargestTerm(state, a);
+    if (!(t.velocity || halves_) || !(t.est <= 2 * t.level)) return "";
     const std::string of =
-        halves_
-            ? "64*n*eps*|" + std::string(velocity ? "v" : "x") + "|/" +
-                  Text(ElementHalves<WindowT>::kDivisor) + ", " + Text(level) +
-                  ", of the difference of an element and its halves"
-            : "eps*sum|D_N|*max|x| = " + Text(level) + " of (Dx)_N";
+        halves_ ? "64*n*eps*|" + std::string(t.velocity ? "v" : "x") + "|/" +
+                      Text(ElementHalves<WindowT>::kDivisor) + ", " +
+                      Text(t.level) +
+                      ", of the difference of an element and its halves"
+                : "eps*sum|D_N|*max|x| = " + Text(t.level) + " of (Dx)_N";
     return "it is below the round-off of the window's " +
-           std::string(velocity ? "velocity" : "position") +
-           " estimate (at step " + Text(a.dt) + " the estimate " + Text(est) +
+           std::string(t.velocity ? "velocity" : "position") +
+           " estimate (at step " + Text(a.dt) + " the estimate " + Text(t.est) +
            " is within twice the round-off level " + of +
-           "; the allowance is " + Text(allowance) +
+           "; the allowance is " + Text(t.allowance) +
            "); use a larger tolerance";
   }
 

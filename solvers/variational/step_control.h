@@ -48,14 +48,35 @@ inline double EstimateOrder(std::string_view op) {
 //   Δt_new = Δt · clamp(safety · ε_n^(−1/q), 0.1, 0.8)
 // after a rejected one (no growth right after a rejection). q is the order
 // of the estimate (EstimateOrder).
+//
+// Predictive (asked for by the march of a spectral element under its own
+// estimates): after an accepted window the factor is at most
+//   safety · (Δt_n/Δt_m) · (ε_m/ε_n)^(1/q) · ε_n^(−1/q),
+// m the previously accepted window (Gustafsson 1994; Hairer & Wanner,
+// Solving ODEs II, §IV.8, as Radau5 does): a step that had to shrink and
+// an error that rises carry on. On Kepler e = 0.9 over three orbits, lgl8
+// and lgl12 at 10⁻⁶ … 10⁻⁸, the rejections fell from 19–36 to 2–6 and the
+// time at 10⁻⁶ by 22–27 %; on the anharmonic oscillator it moved by
+// −2 … +8 % (docs/performance.md §9). Not measured for the
+// finite-difference windows, which keep the rule above.
 class StepController {
  public:
-  explicit StepController(double order) : q_(order) {}
+  explicit StepController(double order, bool predictive = false)
+      : q_(order), predictive_(predictive) {}
 
-  double Accept(double dt, double err) {
+  // `roundoff`: the error is at the estimate's round-off level, which grows
+  // as the step shrinks; the predictive term then sits out (it would follow
+  // that rise down to ever smaller steps).
+  double Accept(double dt, double err, bool roundoff = false) {
     const double e = std::max(err, 1e-10);
     double factor =
         kSafety * std::pow(e, -0.7 / q_) * std::pow(previous_, 0.4 / q_);
+    if (predictive_ && last_dt_ > 0 && !roundoff)
+      factor = std::min(factor, kSafety * (dt / last_dt_) *
+                                    std::pow(last_err_ / e, 1.0 / q_) *
+                                    std::pow(e, -1.0 / q_));
+    last_dt_ = dt;
+    last_err_ = e;
     factor = std::clamp(factor, 0.2, just_rejected_ ? 1.0 : 2.0);
     previous_ = std::max(e, kPreviousFloor);
     just_rejected_ = false;
@@ -93,6 +114,8 @@ class StepController {
   static constexpr double kPreviousFloor = 0.5;
   static constexpr double kKeepFrom = 0.85, kKeepBelow = 1.2;
   double q_;
+  bool predictive_;
+  double last_dt_ = 0, last_err_ = 1;
   double previous_ = 1.0;
   bool just_rejected_ = false;
 };
