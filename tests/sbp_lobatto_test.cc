@@ -9,7 +9,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 #include "core/action/reduced_system.h"
@@ -17,7 +16,6 @@
 #include "core/sbp/builder.h"
 #include "core/sbp/space.h"
 #include "problems/anharmonic.h"
-#include "problems/kepler.h"
 #include "solvers/variational/end_state.h"
 #include "solvers/variational/march.h"
 #include "solvers/variational/newton.h"

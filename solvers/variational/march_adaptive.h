@@ -39,7 +39,8 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     // (step_control.h): approaching pericentre of Kepler e = 0.9 its error
     // rose 12–18-fold from one element to the next at the same step, and
     // every other element was rejected without it.
-    StepController control(EstimateOrder(grid_.op), element && !halves_);
+    const bool predictive = element && !halves_;
+    StepController control(EstimateOrder(grid_.op), predictive);
     double t = grid_.t_start;
     double dt = InitialStep(state);
     int rejected_in_row = 0;
@@ -84,7 +85,7 @@ class AdaptiveMarch : public MarchCore<WindowT> {
         AcceptWindow(*a, state, t, t1, w.last, err);
       }
       t = t1;
-      dt = control.Accept(w.dt, err, AtRoundOff(state, *a));
+      dt = control.Accept(w.dt, err, predictive && AtRoundOff(state, *a));
     }
     return true;
   }
