@@ -40,6 +40,8 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     // rose 12–18-fold from one element to the next at the same step, and
     // every other element was rejected without it.
     const bool predictive = element && !halves_;
+    // Such an element is also fitted to its far end's frequency (Cap).
+    const bool fit = predictive && order_ == 2;
     StepController control(EstimateOrder(grid_.op), predictive);
     double t = grid_.t_start;
     double dt = InitialStep(state);
@@ -53,9 +55,10 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       // lgl8 at 10⁻⁹ … 10⁻¹²: 2 fallbacks and 1 check failure to none, time
       // −5 … −30 %).
       const double solving = out_.phases.Solving();
+      const double cap = fit ? Cap(w.dt, state) : 0.0;
       Attempt* a =
           &this->Solve(attempt_, state, t, w.points, w.dt, bool(halves_),
-                       PredictorTolerance(), false, bool(halves_));
+                       PredictorTolerance(), false, bool(halves_), cap);
       if (halves_)
         out_.phases.whole_elements += out_.phases.Solving() - solving;
       if (a->ok() && doubling) {
@@ -67,25 +70,30 @@ class AdaptiveMarch : public MarchCore<WindowT> {
         a = &halves_->judged();
       }
       const double err = a->ok() ? ErrorNorm(state, *a) : NAN;
+      // The step solved: a fitted element's own (a last one shortened so is
+      // the last no longer); else w.dt, the halves' pair judged by a half.
+      const double solved = fit ? a->dt : w.dt;
       if (!a->ok() || !(err <= 1)) {
         ++out_.rejected;
         ++rejected_in_row;
-        if (!Rejected(state, *a, err, t, w.dt, control, dt)) return false;
+        if (!Rejected(state, *a, err, t, solved, control, dt)) return false;
         continue;
       }
       rejected_in_row = 0;
       truncation_rejected_at_ = 0;
       tried_between_ = false;
-      const double t1 = w.last ? grid_.t_end : t + w.dt * double(w.points - 1);
+      const bool last = w.last && solved == w.dt;
+      if (fit) omega_last_ = std::max(a->omega, Frequency(state));
+      const double t1 = last ? grid_.t_end : t + solved * double(w.points - 1);
       if (halves_) {
         const double middle = t + 0.5 * w.dt * double(w.points - 1);
         AcceptWindow(halves_->half(0), state, t, middle, false, err);
-        AcceptWindow(halves_->half(1), state, middle, t1, w.last, err);
+        AcceptWindow(halves_->half(1), state, middle, t1, last, err);
       } else {
-        AcceptWindow(*a, state, t, t1, w.last, err);
+        AcceptWindow(*a, state, t, t1, last, err);
       }
       t = t1;
-      dt = control.Accept(w.dt, err, predictive && AtRoundOff(state, *a));
+      dt = control.Accept(solved, err, predictive && AtRoundOff(state, *a));
     }
     return true;
   }
@@ -315,6 +323,33 @@ class AdaptiveMarch : public MarchCore<WindowT> {
            "); use a larger tolerance";
   }
 
+  // The cap on Δt·ω̂ of an element under its own estimates at the step dt
+  // asked for: it is fitted to the frequency at its far end
+  // (window_solve.h): Δt times the larger fastest frequency of its two
+  // ends, the far one at its predictor's end state, is kept within twice
+  // the step asked for times the larger of the start's frequency and the
+  // last element's (ω may double across an element) and within half the
+  // stability limit. Approaching pericentre of Kepler e = 0.9 ω rose up
+  // to threefold within an element at the step the controller chose from
+  // the last one, and an lgl16 element's estimate rose with its 16th
+  // power (10² … 10⁶ times the tolerance: 16 rejected of 57, five of them
+  // failures at the stability limit; with the fit 4 of 47). Twice: at
+  // 1.5 or 3 the march took more nodes or more rejections
+  // (docs/performance.md §9).
+  double Cap(double dt, const InitialData& state) const {
+    return std::min(
+        kFrequencyRise * dt * std::max(Frequency(state), omega_last_),
+        0.5 * StabilityLimit(grid_.op));
+  }
+
+  // The fastest frequency at `state`, at least 1/(the time span): a
+  // frequency scale for step control that a free particle has too.
+  double Frequency(const InitialData& state) const {
+    const double span = grid_.t_end - grid_.t_start;
+    return std::max(window_.FastestFrequency(state.x.data(), state.v.data()),
+                    1.0 / span);
+  }
+
   double InitialStep(const InitialData& state) const {
     const double span = grid_.t_end - grid_.t_start;
     const double longest = span / double(options_.window_points - 1);
@@ -345,6 +380,10 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   }
 
   static constexpr double kElementPredictor = 1e-6;
+  // How far a fitted element's far-end frequency may rise (Cap), and ω̂ of
+  // the last accepted element.
+  static constexpr double kFrequencyRise = 2.0;
+  double omega_last_ = 0;
   std::string last_why_;
   double last_residual_ = NAN;
   // Every window's attempt and, with step doubling, its half-step

@@ -48,9 +48,9 @@ class MarchCore {
   // when nothing asks for them.
   Attempt& Solve(Attempt& a, const InitialData& state, double t0, int points,
                  double dt, bool fresh, Tolerance predictor, bool uniform,
-                 bool nodes = false) {
+                 bool nodes = false, double theta_cap = 0) {
     solver_.Solve(a, state, t0, points, dt, fresh, nodes || WantNodes(),
-                  predictor, uniform);
+                  predictor, uniform, theta_cap);
     out_.predictor_steps += a.predictor_steps;
     out_.phases += a.phases;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
@@ -60,7 +60,8 @@ class MarchCore {
       // once more with a Jacobian of this window's own. (A solver that
       // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
-      return Solve(a, state, t0, points, dt, true, predictor, uniform, nodes);
+      return Solve(a, state, t0, points, dt, true, predictor, uniform, nodes,
+                   theta_cap);
     }
     return a;
   }

@@ -73,6 +73,9 @@ struct WindowAttempt {
   double residual = std::numeric_limits<double>::quiet_NaN();
   int points = 0;
   double dt = 0;
+  // The larger fastest frequency of the window's ends, when it was fitted
+  // to one (window_solve.h, theta_cap); 0 otherwise.
+  double omega = 0;
   int iterations = 0, corrections = 0;
   State x_end, v_end;        // x_N, (Dx)_N
   State est_x, est_v;        // embedded estimates of their errors
@@ -105,7 +108,7 @@ struct WindowAttempt {
     why.clear();
     residual = std::numeric_limits<double>::quiet_NaN();
     points = 0;
-    dt = 0;
+    dt = omega = 0;
     iterations = corrections = 0;
     for (State* s : {&x_end, &v_end, &est_x, &est_v, &roundoff_v})
       s->assign(std::size_t(components), 0.0);
