@@ -15,16 +15,17 @@
 // row interleaved run by run (a drift of the machine falls on both), and
 // the phases from the timed runs beside them.
 //
-// A spectral element under error control keeps two halves and solves the
-// whole element besides, for their estimate and their Newton start
-// (element_halves.h): three element solves per two kept, where the
-// finite-difference windows' estimates come with the window's own solve.
-// The last table gives that whole element's share of the (timed) adaptive
-// march and the ratio without it, which separates the estimator's own
-// solve from the rest of the machinery (predictor, rejections, checks).
-// An OP of lgl8_embedded (lgl12_, lgl16_) marches the element under error
-// control by its own end-node estimates instead (ElementEstimate::
-// kEmbedded): one solve per element, as a finite-difference window.
+// A spectral element under error control by its halves keeps two halves
+// and solves the whole element besides, for their estimate and their
+// Newton start (element_halves.h): three element solves per two kept,
+// where the finite-difference windows' estimates come with the window's
+// own solve. The last table gives that whole element's share of the
+// (timed) adaptive march and the ratio without it, which separates the
+// estimator's own solve from the rest of the machinery (predictor,
+// rejections, checks). An OP of lgl8_halves (lgl12_, lgl16_) marches the
+// element so at every tolerance, lgl8_embedded by its own end-node
+// estimates (one solve per element, as a finite-difference window), lgl8
+// as the march does by default (ElementEstimate).
 //
 // Usage: march_phases_bench [--repeats R] [--window W] [--trajectory]
 // [PROBLEM T_END OP TOL ...]
@@ -153,11 +154,14 @@ void Print(const char* kind, double tol, const Run& run, double error) {
 std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
                             bool trajectory) {
   const studies::NamedProblem& problem = studies::FindProblem(row.problem);
-  // OP_embedded: a spectral element under error control by its own
-  // end-node estimates (MarchOptions::element_estimate), one solve each.
+  // OP_embedded, OP_halves: a spectral element under error control by its
+  // own end-node estimates, one solve each, or by its halves, at every
+  // tolerance (MarchOptions::element_estimate; OP alone: the default).
   std::string op = row.op;
   const bool embedded = op.ends_with("_embedded");
+  const bool halves = op.ends_with("_halves");
   if (embedded) op.resize(op.size() - std::string("_embedded").size());
+  if (halves) op.resize(op.size() - std::string("_halves").size());
   // A spectral element's window is the element.
   const long long window =
       sbp::IsElement(op) ? DefaultWindowPoints(Path::kReducedNewton, op, true)
@@ -165,6 +169,7 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
   Grid grid{.op = op, .t_start = 0.0, .t_end = row.t_end};
   MarchOptions o;
   if (embedded) o.element_estimate = ElementEstimate::kEmbedded;
+  if (halves) o.element_estimate = ElementEstimate::kHalves;
   o.window_points = window;
   o.phase_timings = true;
   o.keep_trajectory = trajectory;

@@ -81,8 +81,8 @@ void Collect(const P& problem, const vivp::variational::InitialData& init,
   o.stabilize = false;
   const double level = Level(op);
   if (tolerance) o.tolerance = {level, level};
-  if (embedded)
-    o.element_estimate = vivp::variational::ElementEstimate::kEmbedded;
+  o.element_estimate = embedded ? vivp::variational::ElementEstimate::kEmbedded
+                                : vivp::variational::ElementEstimate::kHalves;
   o.window_observer = [&](const vivp::variational::WindowSample& s) {
     std::vector<double> tau(s.points), xs(s.points * d), vs(s.points * d);
     for (int i = 0; i < s.points; ++i) tau[i] = s.dt * double(i);

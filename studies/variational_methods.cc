@@ -23,13 +23,16 @@ namespace {
 
 // A method name: variational_sbpXY (its knob a tolerance, like dopri5's) or
 // variational_sbpXY_uniform (its knob a step count); a spectral element also
-// variational_lglN_embedded, under error control by its own end-node
-// estimates instead of its halves (MarchOptions::element_estimate).
+// variational_lglN_embedded and variational_lglN_halves, under error
+// control by its own end-node estimates or by its halves at every
+// tolerance (variational_lglN: the march's default, the first down to
+// 10⁻⁸; MarchOptions::element_estimate).
 constexpr std::string_view kUniform = "_uniform";
 constexpr std::string_view kEmbedded = "_embedded";
+constexpr std::string_view kHalves = "_halves";
 std::string Operator(const std::string& method) {
   std::string op = method.substr(std::string("variational_").size());
-  for (std::string_view kind : {kUniform, kEmbedded})
+  for (std::string_view kind : {kUniform, kEmbedded, kHalves})
     if (op.ends_with(kind)) op.resize(op.size() - kind.size());
   return op;
 }
@@ -66,6 +69,8 @@ variational::MarchResult March(const NamedProblem& p, const std::string& method,
     o.tolerance = {knob, knob};
     if (method.ends_with(kEmbedded))
       o.element_estimate = variational::ElementEstimate::kEmbedded;
+    if (method.ends_with(kHalves))
+      o.element_estimate = variational::ElementEstimate::kHalves;
   } else {
     g.points = static_cast<long long>(knob) + 1;
     // A spectral element marches whole elements of n − 1 steps: the count
@@ -232,14 +237,14 @@ void RegisterVariationalMethods() {
   static const bool registered = [] {
     // Every operator under error control and uniform: the finite-difference
     // operators and the spectral elements, these also under error control
-    // by their embedded estimates.
+    // by their embedded estimates or their halves at every tolerance.
     std::vector<std::string> names;
     std::vector<std::string> ops = sbp::OperatorNames();
     for (const std::string& op : ops)
       for (const std::string kind : {"", "_uniform"})
         names.push_back("variational_" + op + kind);
     for (const sbp::Coefficients* e : sbp::ElementOperators())
-      for (const std::string kind : {"", "_uniform", "_embedded"})
+      for (const std::string kind : {"", "_uniform", "_embedded", "_halves"})
         names.push_back("variational_" + std::string(e->name) + kind);
     for (const std::string& name : names)
       RegisterExternalMethod(

@@ -87,6 +87,7 @@ BOOST_DATA_TEST_CASE(error_control_estimate_bounds_every_element_s_error,
   // errors left out, which at 1e-8 leaves lgl12 and lgl16 too few to count.
   variational::MarchOptions o;
   o.tolerance = {tol, tol};
+  o.element_estimate = variational::ElementEstimate::kHalves;
   int checked = 0;
   double worst = 0;
   EachElementValue(op, o,
@@ -143,36 +144,49 @@ BOOST_DATA_TEST_CASE(embedded_estimates_bound_every_element_s_nodes,
 }
 
 BOOST_AUTO_TEST_CASE(whole_elements_are_accounted_apart_in_the_phases) {
-  // Under error control an element is solved whole (for the halves'
-  // estimate and start) and as two halves. With phase timings the whole
-  // elements' solves are reported apart (MarchPhases::whole_elements, the
-  // share bench/march_phases_bench takes out of the per-node ratio): a part
-  // of the solve phases, which a finite-difference window does not have.
+  // Under error control by its halves an element is solved whole (for the
+  // halves' estimate and start) and as two halves. With phase timings the
+  // whole elements' solves are reported apart (MarchPhases::whole_elements,
+  // the share bench/march_phases_bench takes out of the per-node ratio): a
+  // part of the solve phases, which a finite-difference window and an
+  // element under its own estimates do not have. By default
+  // (ElementEstimate::kAuto) an element takes its own estimates down to a
+  // tolerance of kEmbeddedFrom = 1e-8 and its halves below.
   const problems::Anharmonic anharmonic;
-  for (const char* op : {"lgl8", "sbp84"}) {
+  using variational::ElementEstimate;
+  struct Case {
+    const char* op;
+    double tol;
+    ElementEstimate estimate;
+    bool whole;  // whole elements solved
+  };
+  for (const Case& c : {Case{"lgl8", 1e-8, ElementEstimate::kHalves, true},
+                        Case{"lgl8", 1e-8, ElementEstimate::kAuto, false},
+                        Case{"lgl8", 1e-9, ElementEstimate::kAuto, true},
+                        Case{"lgl8", 1e-9, ElementEstimate::kEmbedded, false},
+                        Case{"sbp84", 1e-8, ElementEstimate::kHalves, false}}) {
     variational::MarchOptions o;
-    o.tolerance = {1e-8, 1e-8};
+    o.tolerance = {c.tol, c.tol};
+    o.element_estimate = c.estimate;
     o.phase_timings = true;
-    const variational::Grid g{.op = op, .t_end = 10.0};
+    const variational::Grid g{.op = c.op, .t_end = 10.0};
     const auto m = variational::MarchIvp(anharmonic, {{1.0}, {0.3}}, g, o);
     BOOST_TEST_REQUIRE(m.status.converged, m.status.reason);
     const variational::MarchPhases& p = m.phases;
-    if (sbp::IsElement(op)) {
-      BOOST_TEST(p.whole_elements > 0.0);
-      BOOST_TEST(p.whole_elements < p.Solving());
-    } else {
-      BOOST_TEST(p.whole_elements == 0.0);
-    }
+    BOOST_TEST_INFO(c.op << " at " << c.tol << ", estimate "
+                         << int(c.estimate));
+    BOOST_TEST((p.whole_elements > 0.0) == c.whole);
+    BOOST_TEST(p.whole_elements < p.Solving());
   }
 }
 
 BOOST_DATA_TEST_CASE(error_control_end_error_follows_the_tolerance,
                      bdata::make(Elements()), op) {
-  // Kepler e = 0.9 over three orbits, tolerances 1e-6 … 1e-10: the end
-  // state (the last element's hand-off) within 10 times the tolerance in
-  // position and 300 times in velocity. Measured at most 3.3 and 75 (lgl8
-  // at 1e-8): the tolerance bounds each element's local error, as an ODE
-  // solver's does, and the end error sums them over some 100 elements; at
+  // By its halves, Kepler e = 0.9 over three orbits, tolerances 1e-6 …
+  // 1e-10: the end state (the last element's hand-off) within 10 times the
+  // tolerance in position and 300 times in velocity. Measured at most 3.3 and
+  // 75 (lgl8 at 1e-8): the tolerance bounds each element's local error, as an
+  // ODE solver's does, and the end error sums them over some 100 elements; at
   // pericentre (speed 4.4, acceleration 100) a phase error moves the
   // velocity 20 times more than the position. Tighter tolerances take more
   // nodes.
@@ -184,6 +198,7 @@ BOOST_DATA_TEST_CASE(error_control_end_error_follows_the_tolerance,
   for (double tol : {1e-6, 1e-8, 1e-10}) {
     variational::MarchOptions o;
     o.tolerance = {tol, tol};
+    o.element_estimate = variational::ElementEstimate::kHalves;
     const variational::Grid g{.op = op, .t_end = t_end};
     const auto m =
         variational::MarchIvp(k, {{0.1, 0.0}, {0.0, std::sqrt(19.0)}}, g, o);

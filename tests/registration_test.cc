@@ -98,6 +98,7 @@ BOOST_AUTO_TEST_CASE(
   BOOST_TEST(has("gauss2"));
   BOOST_TEST(has("variational_sbp42_uniform"));
   BOOST_TEST(has("variational_lgl8_embedded"));
+  BOOST_TEST(has("variational_lgl8_halves"));
   BOOST_TEST(!has("variational_sbp42_embedded"));
   BOOST_TEST(b.reference.find("Euler–Lagrange") != std::string::npos);
   auto order = [&](const std::string& m, long n) {

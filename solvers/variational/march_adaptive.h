@@ -4,9 +4,10 @@
 // whose estimates exceed the tolerance, or that fails, is rejected and solved
 // again with a smaller Δt. SBP21, whose position estimate is unreliable,
 // estimates by step doubling (the window again at Δt/2; the finer one is
-// kept); a spectral element by its two halves (element_halves.h), which are
-// kept, or, with ElementEstimate::kEmbedded, by its own end-node estimates
-// as a finite-difference window. See docs/error_control.md.
+// kept); a spectral element by its own end-node estimates as a
+// finite-difference window or by its two halves (element_halves.h), which
+// are kept (ElementEstimate: by default the first down to a tolerance of
+// 10⁻⁸, the halves below). See docs/error_control.md.
 #pragma once
 
 #include <optional>
@@ -28,11 +29,15 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
     // Step doubling where the position estimate is not one (SBP21); a
-    // spectral element by its halves (element_halves.h) or, asked for, by
-    // its end node's embedded estimates as a finite-difference window.
+    // spectral element by its end node's embedded estimates as a
+    // finite-difference window, or by its halves (element_halves.h).
     const sbp::Coefficients& table = sbp::Table(grid_.op);
     const bool element = table.max_points > 0;
-    if (element && options_.element_estimate == ElementEstimate::kHalves)
+    const Tolerance& tol = options_.tolerance;
+    const ElementEstimate estimate = options_.element_estimate;
+    if (element && (estimate == ElementEstimate::kHalves ||
+                    (estimate == ElementEstimate::kAuto &&
+                     std::max(tol.absolute, tol.relative) < kEmbeddedFrom)))
       halves_.emplace(window_, grid_.op, options_.hand_off);
     const bool doubling = !element && !table.measured.position_estimate;
     // An element under its own estimates with the predictive term
@@ -324,18 +329,13 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   }
 
   // The cap on Δt·ω̂ of an element under its own estimates at the step dt
-  // asked for: it is fitted to the frequency at its far end
-  // (window_solve.h): Δt times the larger fastest frequency of its two
-  // ends, the far one at its predictor's end state, is kept within twice
-  // the step asked for times the larger of the start's frequency and the
-  // last element's (ω may double across an element) and within half the
-  // stability limit. Approaching pericentre of Kepler e = 0.9 ω rose up
-  // to threefold within an element at the step the controller chose from
-  // the last one, and an lgl16 element's estimate rose with its 16th
-  // power (10² … 10⁶ times the tolerance: 16 rejected of 57, five of them
-  // failures at the stability limit; with the fit 4 of 47). Twice: at
-  // 1.5 or 3 the march took more nodes or more rejections
-  // (docs/performance.md §9).
+  // asked for (window_solve.h fits the element to it): its far end's
+  // fastest frequency, at the predictor's end state, at most twice the
+  // start's and the last element's, and half the stability limit. Near
+  // pericentre of Kepler e = 0.9 ω rose up to threefold within an element,
+  // an lgl16 estimate with its 16th power: 16 of 57 elements rejected at
+  // 1e-7, 4 of 47 fitted (1.5 or 3 took more nodes or rejections;
+  // docs/performance.md §9).
   double Cap(double dt, const InitialData& state) const {
     return std::min(
         kFrequencyRise * dt * std::max(Frequency(state), omega_last_),
