@@ -28,7 +28,7 @@ enum class HandOff { kCorrected, kNaive };
 //   The embedded estimates are measured to bound every node down to 10⁻⁸
 //   (at 10⁻¹⁰ an lgl16 position estimate fell 7.7 times short) and their
 //   end error stops falling near 10⁻¹¹; down to there they are the faster
-//   (Kepler e = 0.9 to 10⁻¹⁰: lgl12 in 0.49 ms, the halves' best 0.89 ms;
+//   (Kepler e = 0.9 to 10⁻¹⁰: lgl12 in 0.48 ms, the halves' best 0.87 ms;
 //   docs/error_control.md, "Which to take"). The halves' end error
 //   follows the tolerance down to 10⁻¹² and below.
 enum class ElementEstimate { kAuto, kHalves, kEmbedded };
