@@ -51,8 +51,8 @@ class WindowSolver {
   // accuracy; `uniform` adds check 3.
   // The result goes into `a` (reset first), which is returned.
   //
-  // `theta_cap` > 0 (error control by frequency, march_adaptive.h; a
-  // second-order system): the window is first shortened until Δt times
+  // `theta_cap` > 0 (an element under its own estimates, march_adaptive.h;
+  // a second-order system): the window is first shortened until Δt times
   // the larger fastest frequency of its two ends, the far one at the
   // predictor's end state, is within theta_cap; a.dt and a.omega say what
   // was solved.
