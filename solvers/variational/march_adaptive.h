@@ -10,6 +10,7 @@
 // 10⁻⁸, the halves below). See docs/error_control.md.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -28,9 +29,6 @@ class AdaptiveMarch : public MarchCore<WindowT> {
 
   // Error control: Δt per window from the embedded estimates.
   bool Run(InitialData& state) {
-    // Step doubling where the position estimate is not one (SBP21); a
-    // spectral element by its end node's embedded estimates as a
-    // finite-difference window, or by its halves (element_halves.h).
     const sbp::Coefficients& table = sbp::Table(grid_.op);
     const bool element = table.max_points > 0;
     const Tolerance& tol = options_.tolerance;
@@ -41,39 +39,31 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       halves_.emplace(window_, grid_.op, options_.hand_off);
     const bool doubling = !element && !table.measured.position_estimate;
     // An element under its own estimates with the predictive term
-    // (step_control.h): approaching pericentre of Kepler e = 0.9 its error
-    // rose 12–18-fold from one element to the next at the same step, and
-    // every other element was rejected without it.
+    // (step_control.h): near pericentre of Kepler e = 0.9 its error rose
+    // 12–18-fold element by element, and every other one was rejected.
     const bool predictive = element && !halves_;
-    // Such an element is also fitted to its far end's frequency (Cap).
-    const bool fit = predictive && order_ == 2;
+    // Such an element, and a second-order finite-difference window of
+    // boundary order 3 or more, is fitted to its far end's frequency (Cap;
+    // not the halves, judged at the step asked for, nor step doubling).
+    // SBP42's estimate grows the slowest with ω, and the far end's ω (70 ns
+    // a window) cost its cheap windows 1–7 % more time for the same nodes.
+    const bool fit = order_ == 2 && !halves_ && !doubling &&
+                     (element || table.boundary_order >= 3);
     StepController control(EstimateOrder(grid_.op), predictive);
     double t = grid_.t_start;
     double dt = InitialStep(state);
     int rejected_in_row = 0;
+    const double span = grid_.t_end - grid_.t_start;
     while (t < grid_.t_end) {
-      const Window w = NextWindow(t, dt, state);
+      // The fastest frequency at the start (the engine keeps the one at its
+      // last hand-off), for the window's stability limit and its fit.
+      const double omega =
+          order_ == 2 ? window_.FastestFrequency(state.x.data(), state.v.data())
+                      : 0.0;
+      const Window w = NextWindow(t, dt, omega);
       if (!CanContinue(t, w, rejected_in_row)) return false;
-      // A whole element factors its own Jacobian: the last one is a pair
-      // back, a whole element's length away and at another step, and chord
-      // steps on it failed or crawled (Kepler e = 0.9 over three orbits,
-      // lgl8 at 10⁻⁹ … 10⁻¹²: 2 fallbacks and 1 check failure to none, time
-      // −5 … −30 %).
-      const double solving = out_.phases.Solving();
-      const double cap = fit ? Cap(w.dt, state) : 0.0;
-      Attempt* a =
-          &this->Solve(attempt_, state, t, w.points, w.dt, bool(halves_),
-                       PredictorTolerance(), false, bool(halves_), cap);
-      if (halves_)
-        out_.phases.whole_elements += out_.phases.Solving() - solving;
-      if (a->ok() && doubling) {
-        Doubled(state, t, *a, fine_);
-        std::swap(attempt_, fine_);  // a (attempt_) is now the fine window
-      } else if (a->ok() && halves_) {
-        halves_->Solve(*a, state, t, this->WantNodes());
-        for (int k = 0; k < 2; ++k) out_.phases += halves_->half(k).phases;
-        a = &halves_->judged();
-      }
+      Attempt* a = SolveWindow(state, t, w, fit ? Cap(w.dt, omega) : 0.0, omega,
+                               doubling);
       const double err = a->ok() ? ErrorNorm(state, *a) : NAN;
       // The step solved: a fitted element's own (a last one shortened so is
       // the last no longer); else w.dt, the halves' pair judged by a half.
@@ -88,7 +78,7 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       truncation_rejected_at_ = 0;
       tried_between_ = false;
       const bool last = w.last && solved == w.dt;
-      if (fit) omega_last_ = std::max(a->omega, Frequency(state));
+      if (fit) omega_last_ = std::max({a->omega, omega, 1.0 / span});
       const double t1 = last ? grid_.t_end : t + solved * double(w.points - 1);
       if (halves_) {
         const double middle = t + 0.5 * w.dt * double(w.points - 1);
@@ -135,12 +125,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     double dt;
     bool last;
   };
-  Window NextWindow(double t, double& dt, const InitialData& state) const {
-    if (order_ == 2) {
-      const double omega =
-          window_.FastestFrequency(state.x.data(), state.v.data());
-      if (omega > 0) dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
-    }
+  // `omega`: the fastest frequency at t (second order; 0 otherwise).
+  Window NextWindow(double t, double& dt, double omega) const {
+    if (omega > 0) dt = std::min(dt, 0.5 * StabilityLimit(grid_.op) / omega);
     const int w = int(options_.window_points);
     const double remaining = grid_.t_end - t;
     if (remaining <= double(w - 1) * dt * (1 + 1e-12)) {
@@ -151,6 +138,31 @@ class AdaptiveMarch : public MarchCore<WindowT> {
     if (remaining < 2.0 * double(w - 1) * dt)
       return {w, remaining / (2.0 * double(w - 1)), false};
     return {w, dt, false};
+  }
+
+  // The window w from t, solved with its fine half-step twin (step
+  // doubling) or its halves; the attempt to judge.
+  Attempt* SolveWindow(const InitialData& state, double t, const Window& w,
+                       double cap, double omega, bool doubling) {
+    // A whole element factors its own Jacobian: the last one is a pair
+    // back, a whole element's length away and at another step, and chord
+    // steps on it failed or crawled (Kepler e = 0.9 over three orbits,
+    // lgl8 at 10⁻⁹ … 10⁻¹²: 2 fallbacks and 1 check failure to none, time
+    // −5 … −30 %).
+    const double solving = out_.phases.Solving();
+    Attempt* a =
+        &this->Solve(attempt_, state, t, w.points, w.dt, bool(halves_),
+                     PredictorTolerance(), false, bool(halves_), cap, omega);
+    if (halves_) out_.phases.whole_elements += out_.phases.Solving() - solving;
+    if (a->ok() && doubling) {
+      Doubled(state, t, *a, fine_);
+      std::swap(attempt_, fine_);  // a (attempt_) is now the fine window
+    } else if (a->ok() && halves_) {
+      halves_->Solve(*a, state, t, this->WantNodes());
+      for (int k = 0; k < 2; ++k) out_.phases += halves_->half(k).phases;
+      a = &halves_->judged();
+    }
+    return a;
   }
 
   // False, with the status set, when the march cannot go on: the step fell
@@ -179,14 +191,12 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   }
 
   // A rejected window at step dtw: sets the next step dt, or the status and
-  // false when no step meets the tolerance in double precision.
-  //
-  // Truncation errors fall with the step; the round-off of (Dx)_N grows like
-  // ε|x|/Δt. A window rejected on a velocity estimate at its round-off level
-  // needs a larger step, not a smaller one. When a larger step was rejected
-  // on truncation since the last accepted window, one step between the two
-  // is tried; if that fails too, no step meets the tolerance here (measured:
-  // SBP84 on Kepler e = 0.9 below 1e-9).
+  // false when no step meets the tolerance in double precision. Truncation
+  // errors fall with the step, the round-off of (Dx)_N grows like ε|x|/Δt:
+  // a window rejected on a velocity estimate at its round-off level needs
+  // a larger step. When a larger step was rejected on truncation since the
+  // last accepted window, one step between the two is tried; if that fails
+  // too, no step meets the tolerance (SBP84, Kepler e = 0.9, below 1e-9).
   bool Rejected(const InitialData& state, const Attempt& a, double err,
                 double t, double dtw, StepController& control, double& dt) {
     last_why_ =
@@ -213,22 +223,18 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   Tolerance PredictorTolerance() const {
     const Tolerance& t = options_.tolerance;
     // A spectral element's predictor is its Newton start and the reference
-    // of check 2 only (the halves estimate its error): at 10⁻⁶ it is
-    // small against the solution, which another branch differs by, and
-    // against the check's allowance, the error of the element's end node
-    // (of order about n, far above the tolerance). Kepler e = 0.9 over three
-    // orbits, lgl8 at 10⁻⁹ … 10⁻¹³: 5–18 times fewer predictor steps than
-    // at the hundredth of the tolerance, the same Newton corrections and
-    // nodes within 1 %.
+    // of check 2 only (the halves estimate its error): at 10⁻⁶ it is small
+    // against the solution, which another branch differs by, and against
+    // the check's allowance (the end node's error, of order about n).
+    // Kepler e = 0.9, lgl8 at 10⁻⁹ … 10⁻¹³: 5–18 times fewer predictor
+    // steps than at a hundredth, the same corrections, nodes within 1 %.
     if (halves_)
       return {std::max(t.absolute, kElementPredictor),
               std::max(t.relative, kElementPredictor)};
-    // An element under its embedded estimates: at the tolerance. Per node
-    // the march took 2–22 % less time than at a hundredth (fewer Newton
-    // corrections, more factorizations; lgl8 and lgl12 at 10⁻⁷ on the
-    // anharmonic oscillator and Kepler e = 0.9, lgl16 at 10⁻⁸;
-    // docs/performance.md §9). Check 2 allows for the predictor's error,
-    // and a branch off by the solution's size is still far outside it.
+    // An element under its embedded estimates: at the tolerance, 2–22 %
+    // less time per node than at a hundredth (docs/performance.md §9).
+    // Check 2 allows for the predictor's error, and a branch off by the
+    // solution's size is still far outside it.
     const double f = sbp::IsElement(grid_.op) ? 1.0 : 0.01;
     return {t.absolute > 0 ? std::max(f * t.absolute, 1e-15) : 0.0,
             t.relative > 0 ? std::max(f * t.relative, 1e-14) : 0.0};
@@ -328,26 +334,20 @@ class AdaptiveMarch : public MarchCore<WindowT> {
            "); use a larger tolerance";
   }
 
-  // The cap on Δt·ω̂ of an element under its own estimates at the step dt
-  // asked for (window_solve.h fits the element to it): its far end's
-  // fastest frequency, at the predictor's end state, at most twice the
-  // start's and the last element's, and half the stability limit. Near
-  // pericentre of Kepler e = 0.9 ω rose up to threefold within an element,
-  // an lgl16 estimate with its 16th power: 16 of 57 elements rejected at
-  // 1e-7, 4 of 47 fitted (1.5 or 3 took more nodes or rejections;
-  // docs/performance.md §9).
-  double Cap(double dt, const InitialData& state) const {
-    return std::min(
-        kFrequencyRise * dt * std::max(Frequency(state), omega_last_),
-        0.5 * StabilityLimit(grid_.op));
-  }
-
-  // The fastest frequency at `state`, at least 1/(the time span): a
-  // frequency scale for step control that a free particle has too.
-  double Frequency(const InitialData& state) const {
+  // The cap on Δt·ω̂ of a window at the step dt asked for, ω the fastest
+  // frequency at its start (window_solve.h fits the window to it): its far
+  // end's, at the predictor's end state, may rise kFrequencyRise-fold over
+  // the start's and the last window's (an element's kElementFrequencyRise),
+  // and Δt·ω̂ stays within half the stability limit. Kepler e = 0.9 at
+  // 1e-7: lgl16 rejected 16 of 57 elements unfitted, 4 of 47 fitted; SBP84
+  // at 1e-5 30 windows, fitted 9, and 3–7 instead of 20–24 on the
+  // anharmonic oscillator (docs/performance.md §9, docs/error_control.md).
+  double Cap(double dt, double omega) const {
+    const double rise =
+        sbp::IsElement(grid_.op) ? kElementFrequencyRise : kFrequencyRise;
     const double span = grid_.t_end - grid_.t_start;
-    return std::max(window_.FastestFrequency(state.x.data(), state.v.data()),
-                    1.0 / span);
+    return std::min(rise * dt * std::max({omega, 1.0 / span, omega_last_}),
+                    0.5 * StabilityLimit(grid_.op));
   }
 
   double InitialStep(const InitialData& state) const {
@@ -380,9 +380,9 @@ class AdaptiveMarch : public MarchCore<WindowT> {
   }
 
   static constexpr double kElementPredictor = 1e-6;
-  // How far a fitted element's far-end frequency may rise (Cap), and ω̂ of
-  // the last accepted element.
-  static constexpr double kFrequencyRise = 2.0;
+  // How far a fitted window's far-end frequency may rise (Cap), an
+  // element's, and ω̂ of the last accepted window.
+  static constexpr double kFrequencyRise = 1.25, kElementFrequencyRise = 2.0;
   double omega_last_ = 0;
   std::string last_why_;
   double last_residual_ = NAN;

@@ -48,9 +48,10 @@ class MarchCore {
   // when nothing asks for them.
   Attempt& Solve(Attempt& a, const InitialData& state, double t0, int points,
                  double dt, bool fresh, Tolerance predictor, bool uniform,
-                 bool nodes = false, double theta_cap = 0) {
+                 bool nodes = false, double theta_cap = 0,
+                 double omega_start = -1) {
     solver_.Solve(a, state, t0, points, dt, fresh, nodes || WantNodes(),
-                  predictor, uniform, theta_cap);
+                  predictor, uniform, theta_cap, omega_start);
     out_.predictor_steps += a.predictor_steps;
     out_.phases += a.phases;
     if (a.failure == WindowFailure::kCheck) ++out_.check_failures;
@@ -61,7 +62,7 @@ class MarchCore {
       // starts each window afresh would only repeat itself.)
       ++out_.fallbacks;
       return Solve(a, state, t0, points, dt, true, predictor, uniform, nodes,
-                   theta_cap);
+                   theta_cap, omega_start);
     }
     return a;
   }

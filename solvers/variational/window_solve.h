@@ -51,14 +51,15 @@ class WindowSolver {
   // accuracy; `uniform` adds check 3.
   // The result goes into `a` (reset first), which is returned.
   //
-  // `theta_cap` > 0 (an element under its own estimates, march_adaptive.h;
-  // a second-order system): the window is first shortened until Δt times
-  // the larger fastest frequency of its two ends, the far one at the
+  // `theta_cap` > 0 (error control of a second-order system,
+  // march_adaptive.h): the window is first shortened until Δt times the
+  // larger fastest frequency of its two ends, the far one at the
   // predictor's end state, is within theta_cap; a.dt and a.omega say what
-  // was solved.
+  // was solved. `omega_start`, when not negative, is the start's (the
+  // march has it already).
   Attempt& Solve(Attempt& a, const InitialData& initial, double t0, int points,
                  double dt, bool fresh, bool nodes, Tolerance predictor_tol,
-                 bool uniform, double theta_cap = 0) {
+                 bool uniform, double theta_cap = 0, double omega_start = -1) {
     const int d = window_.dim(), order = window_.order();
     a.Reset(d);
     a.points = points;
@@ -127,7 +128,8 @@ class WindowSolver {
       factor = next;
     }
     if (theta_cap > 0 && order == 2 && pr.ok)
-      pr = FitToFrequency(a, t0, dt, theta_cap, predictor_tol, times, pr);
+      pr = FitToFrequency(a, t0, dt, theta_cap, omega_start, predictor_tol,
+                          times, pr);
     a.phases.predictor += clock.Since(predicting);
     if (!pr.ok) return Failed(a, WindowFailure::kPredictor, pr.failure);
     const double* pend_x = &px_[std::size_t(points - 1) * d];
@@ -169,12 +171,12 @@ class WindowSolver {
   // node).
   template <class Times>
   PredictorReport FitToFrequency(Attempt& a, double t0, double& dt,
-                                 double theta_cap, Tolerance tol,
+                                 double theta_cap, double start, Tolerance tol,
                                  const Times& times, PredictorReport pr) {
     const int d = window_.dim(), points = a.points;
     const double offset =
         sbp::Table(window_.op()).template Offset<double>(points - 1);
-    const double start = window_.FastestFrequency(x0_.data(), v0_.data());
+    if (start < 0) start = window_.FastestFrequency(x0_.data(), v0_.data());
     const auto omega = [&](int i) {
       const std::size_t at = std::size_t(i) * d;
       return std::max(start, window_.FastestFrequency(&px_[at], &pv_[at]));
