@@ -33,9 +33,9 @@ MarchResult KeplerE09(const std::string& op, const MarchOptions& o,
 BOOST_DATA_TEST_CASE(KeplerE09_TolerancedRun_EndsWithinTenTimesTheTolerance,
                      bdata::make({"sbp42", "sbp63", "sbp84"}), op) {
   // Measured end errors (position, velocity) at tolerance 1e-6: SBP42
-  // 1.8e-8, 4.1e-7; SBP63 3.6e-11, 8.4e-10; SBP84 3.0e-10, 6.9e-9 — with
-  // 97518, 49950 and 20493 nodes. Energy and angular momentum over every
-  // node are reported and bounded by the same 1e-5.
+  // 5.0e-8, 1.1e-6; SBP63 5.4e-11, 1.2e-9; SBP84 9.4e-10, 2.1e-8 — with
+  // 57708, 38641 and 11889 nodes (4 December). Energy and angular momentum
+  // over every node are reported and bounded by the same 1e-5.
   MarchOptions o;
   o.tolerance = {1e-6, 1e-6};
   const MarchResult m = KeplerE09(op, o);
