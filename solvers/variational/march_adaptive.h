@@ -65,7 +65,7 @@ class AdaptiveMarch : public MarchCore<WindowT> {
       Attempt* a = SolveWindow(state, t, w, fit ? Cap(w.dt, omega) : 0.0, omega,
                                doubling);
       const double err = a->ok() ? ErrorNorm(state, *a) : NAN;
-      // The step solved: a fitted element's own (a last one shortened so is
+      // The step solved: a fitted window's own (a last one shortened so is
       // the last no longer); else w.dt, the halves' pair judged by a half.
       const double solved = fit ? a->dt : w.dt;
       if (!a->ok() || !(err <= 1)) {
