@@ -4,8 +4,13 @@
 // checks, and the rest (step control, acceptance, allocation). Each row
 // under error control is followed by a uniform march of the same operator
 // over the same span with the same number of nodes, and where those end
-// further off than the tolerance by the fewest nodes that do not: the
-// price of the adaptive machinery per node is their ratio.
+// further off than the tolerance by the fewest nodes that do not; and by
+// a march without error control on the adaptive march's own windows
+// (MarchOptions::given_windows): the same nodes, the same solution to
+// round-off, the machinery that chose them apart. The price of the
+// adaptive machinery per node is the ratio to that march; the ratio to a
+// uniform march that meets the tolerance is what a user without error
+// control would pay per node, on more nodes, for the same end error.
 //
 // The phases need a clock read around each of them, which costs most where
 // the phases are short and many: an lgl8 march of the anharmonic oscillator
@@ -46,11 +51,13 @@
 #include <string>
 #include <vector>
 
+#include "bench/march_phases_tables.h"
 #include "solvers/variational/solver_choice.h"
 #include "studies/registry.h"
 
 using namespace vivp;
 using namespace vivp::variational;
+using namespace vivp::bench;
 
 namespace {
 
@@ -61,96 +68,7 @@ struct Row {
   double tol;
 };
 
-struct Run {
-  MarchResult result;
-  double seconds = 0;
-};
-
-// A row's cost per node without the phase clocks, µs: adaptive, uniform;
-// and the share of the adaptive march's time (from its timed run) that went
-// into whole spectral elements.
-struct Cost {
-  std::string row;
-  double adaptive = NAN, uniform = NAN;  // uniform: on the same nodes
-  double whole_share = 0;
-  // A uniform march that ends within the tolerance, where that on the same
-  // nodes does not: its cost per node and its nodes over the adaptive's.
-  double resolved = NAN, resolved_nodes = 1;
-};
-
-// The medians of `repeats` untimed runs of the marches, interleaved, per
-// node of each: the adaptive one and the uniform ones.
-template <class A, class U>
-std::vector<double> Untimed(A&& adaptive, const std::vector<U>& uniform,
-                            int repeats) {
-  std::vector<std::vector<double>> t(1 + uniform.size());
-  for (int r = 0; r < repeats; ++r)
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      const MarchResult m = k == 0 ? adaptive() : uniform[k - 1]();
-      t[k].push_back(1e6 * m.seconds /
-                     double(std::max<long long>(m.points, 1)));
-    }
-  std::vector<double> median;
-  for (auto& v : t) {
-    std::sort(v.begin(), v.end());
-    median.push_back(v[v.size() / 2]);
-  }
-  return median;
-}
-
-// The run with the median total of `repeats`.
-template <class F>
-Run Median(F&& march, int repeats) {
-  std::vector<Run> runs;
-  for (int r = 0; r < repeats; ++r) {
-    Run run;
-    run.result = march();
-    run.seconds = run.result.phases.total;
-    runs.push_back(std::move(run));
-  }
-  std::sort(runs.begin(), runs.end(),
-            [](const Run& a, const Run& b) { return a.seconds < b.seconds; });
-  return std::move(runs[runs.size() / 2]);
-}
-
-// The end state's error: the largest over components of the handed-off
-// position's and velocity's distance from the exact (or reference) state.
-double EndError(const studies::NamedProblem& problem, double t_end,
-                const MarchResult& m) {
-  const studies::ExactState e = problem.exact(t_end);
-  double err = 0;
-  for (std::size_t c = 0; c < e.x.size(); ++c)
-    err = std::max({err, std::abs(m.end_position[c] - e.x[c]),
-                    std::abs(m.end_velocity[c] - e.v[c])});
-  return err;
-}
-
-void Print(const char* kind, double tol, const Run& run, double error) {
-  const MarchResult& m = run.result;
-  const MarchPhases& p = m.phases;
-  const double nodes = double(std::max<long long>(m.points, 1));
-  const double us = 1e6 / nodes;
-  const double other =
-      p.total - (p.predictor + p.setup + p.residual + p.assembly +
-                 p.factorization + p.solve + p.end + p.checks);
-  if (!m.status.converged) {
-    std::printf("| %-8s | %7.0e | not converged: %s |\n", kind, tol,
-                m.status.reason.c_str());
-    return;
-  }
-  std::printf(
-      "| %-8s | %7.0e | %8.2e | %7lld | %5lld | %4d | %5.1f | %4.2f | "
-      "%6.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | %5.3f | "
-      "%5.3f | %5.3f |\n",
-      kind, tol, error, m.points, m.window_count, m.rejected,
-      double(m.corrections) / double(std::max<long long>(m.window_count, 1)),
-      double(m.iterations) / double(std::max<long long>(m.window_count, 1)),
-      p.total * us, p.predictor * us, p.setup * us, p.residual * us,
-      p.assembly * us, p.factorization * us, p.solve * us, p.end * us,
-      p.checks * us, other * us);
-}
-
-// Prints both marches of a row; their untimed cost when both converged.
+// Prints the marches of a row; their untimed cost where they converged.
 std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
                             bool trajectory) {
   const studies::NamedProblem& problem = studies::FindProblem(row.problem);
@@ -207,6 +125,22 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
                : NAN;
   };
   Print("uniform", row.tol, same, error(same));
+  // The adaptive march's own windows without error control.
+  MarchOptions w = u;
+  {
+    MarchOptions keep = o;  // the window reports come with the trajectory
+    keep.phase_timings = false;
+    keep.keep_trajectory = true;
+    const MarchResult m = problem.march(adaptive_grid, keep, {});
+    if (m.status.converged) w.given_windows = AcceptedWindows(m, adaptive_grid);
+  }
+  std::optional<Run> windows;
+  if (!w.given_windows.empty()) {
+    windows =
+        Median([&] { return problem.march(adaptive_grid, w, {}); }, repeats);
+    Print("windows", row.tol, *windows, error(*windows));
+    if (!windows->result.status.converged) windows.reset();
+  }
   // The fewest nodes that do, in whole windows: doubled until a march ends
   // within the tolerance, then bisected between the last count that did
   // not and the first that did, to a sixteenth. Doubling alone overshot:
@@ -242,15 +176,18 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
       Print("resolved", row.tol, r, error(r));
     }
   }
-  if (!same.result.status.converged && !resolved) return std::nullopt;
-  MarchOptions oa = o, ou = u;
-  oa.phase_timings = ou.phase_timings = false;
+  if (!same.result.status.converged && !resolved && !windows)
+    return std::nullopt;
+  MarchOptions oa = o, ou = u, ow = w;
+  oa.phase_timings = ou.phase_timings = ow.phase_timings = false;
   using March = std::function<MarchResult()>;
   std::vector<March> uniform;
   if (same.result.status.converged)
     uniform.push_back([&] { return problem.march(grid, ou, {}); });
   if (resolved && resolved_grid.points != grid.points)
     uniform.push_back([&] { return problem.march(resolved_grid, ou, {}); });
+  if (windows)
+    uniform.push_back([&] { return problem.march(adaptive_grid, ow, {}); });
   const std::vector<double> t = Untimed(
       [&] { return problem.march(adaptive_grid, oa, {}); }, uniform, repeats);
   Cost cost;
@@ -261,46 +198,15 @@ std::optional<Cost> Measure(const Row& row, int repeats, long long chosen,
   cost.adaptive = t[0];
   std::size_t k = 1;
   if (same.result.status.converged) cost.uniform = t[k++];
-  if (k < t.size()) {
-    cost.resolved = t[k];
+  if (resolved && resolved_grid.points != grid.points) {
+    cost.resolved = t[k++];
     cost.resolved_nodes =
         double(resolved_grid.points) / double(adaptive.result.points);
   }
+  if (windows) cost.same_windows = t[k];
   const MarchPhases& p = adaptive.result.phases;
   cost.whole_share = p.total > 0 ? p.whole_elements / p.total : 0.0;
   return cost;
-}
-
-// The table of per-node costs and their ratios.
-void PrintCosts(const std::vector<Cost>& costs, int repeats) {
-  std::printf(
-      "\nCost per node without the phase clocks, µs (median of %d runs of "
-      "each march, the two interleaved), and its ratio. A spectral "
-      "element's march solves, besides the halves it keeps, the whole "
-      "element for their estimate (step doubling): its share of the timed "
-      "adaptive march, and the ratio with that share taken out. Against the "
-      "resolved uniform march (its nodes over the adaptive's), the ratio "
-      "per node and the ratio of the two marches' times:\n\n"
-      "| row | adaptive | uniform | ratio | whole elements | ratio without "
-      "them | resolved uniform (its nodes) | ratio to it | time ratio |\n"
-      "|---|---|---|---|---|---|---|---|---|\n",
-      repeats);
-  for (const Cost& c : costs) {
-    if (std::isnan(c.uniform))
-      std::printf("| %s | %.3f | not converged | | %.0f %% | |", c.row.c_str(),
-                  c.adaptive, 100 * c.whole_share);
-    else
-      std::printf("| %s | %.3f | %.3f | %.2f | %.0f %% | %.2f |", c.row.c_str(),
-                  c.adaptive, c.uniform, c.adaptive / c.uniform,
-                  100 * c.whole_share,
-                  c.adaptive * (1 - c.whole_share) / c.uniform);
-    if (std::isnan(c.resolved))
-      std::printf(" the same | | |\n");
-    else
-      std::printf(" %.3f (×%.1f) | %.2f | %.2f |\n", c.resolved,
-                  c.resolved_nodes, c.adaptive / c.resolved,
-                  c.adaptive / (c.resolved * c.resolved_nodes));
-  }
 }
 
 }  // namespace

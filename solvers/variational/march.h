@@ -21,7 +21,9 @@
 //       remainder (at least the operator's minimum). A window that fails is
 //       solved again with a fresh Jacobian, then split in halves (down to
 //       the operator's minimum); with `stabilize`, a window whose Δt·ω
-//       exceeds the stability limit is solved on a refined grid;
+//       exceeds the stability limit is solved on a refined grid. Or given
+//       windows (MarchOptions::given_windows), each its end and points,
+//       the same way;
 //   error control (tolerance enabled): every window has W points and a Δt
 //       chosen by a step-size controller (step_control.h) from the window's
 //       embedded error estimates; a window whose estimates exceed the
@@ -58,7 +60,7 @@ namespace detail {
 // uniform grid the steps are a multiple of n − 1. Otherwise
 // std::invalid_argument naming the fix.
 inline void CheckElementMarch(const Grid& grid, int n, bool adaptive,
-                              long long window_points) {
+                              long long window_points, bool given_windows) {
   const std::string what =
       grid.op + " is a spectral element of " + std::to_string(n) + " points";
   if (window_points != n)
@@ -66,7 +68,7 @@ inline void CheckElementMarch(const Grid& grid, int n, bool adaptive,
                                 std::to_string(n) + " points, got " +
                                 std::to_string(window_points) +
                                 "; leave the window at its default");
-  if (adaptive) return;
+  if (adaptive || given_windows) return;
   const long long steps = grid.points - 1, per = n - 1;
   const long long below = steps / per * per, above = below + per;
   if (steps < per || steps % per != 0)
@@ -75,6 +77,61 @@ inline void CheckElementMarch(const Grid& grid, int n, bool adaptive,
         ", got " + std::to_string(steps) + "; use " +
         (below > 0 ? std::to_string(below) + " or " : std::string()) +
         std::to_string(above));
+}
+
+// MarchOptions::given_windows: none under error control (it chooses its
+// own windows); each of at least the operator's minimum of points (an
+// element: its own), ending after the one before, finite, the last at
+// t_end; start_node at a window's first node. Otherwise
+// std::invalid_argument naming the fix.
+inline void CheckGivenWindows(const Grid& grid, const MarchOptions& options,
+                              int min_points, int element_points) {
+  const std::vector<GivenWindow>& w = options.given_windows;
+  if (w.empty()) return;
+  if (options.tolerance.enabled())
+    throw std::invalid_argument(
+        "given_windows are the windows of a march without error control; "
+        "under a tolerance the march chooses its own: clear one of them");
+  double last = grid.t_start;
+  long long first = 0;
+  bool start_found = options.start_node == 0;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const std::string at = "given_windows[" + std::to_string(k) + "]";
+    const std::string end =
+        at + " ends at " + std::to_string(w[k].t_end) + ", which";
+    const bool is_last = k + 1 == w.size();
+    if (!std::isfinite(w[k].t_end))
+      throw std::invalid_argument(end + " is not finite; give finite times");
+    if (!(w[k].t_end > last))
+      throw std::invalid_argument(
+          end + " is not after " +
+          (k == 0 ? "t_start = " : "the window before's end, ") +
+          std::to_string(last) + "; give strictly increasing ends");
+    if (is_last ? w[k].t_end != grid.t_end : !(w[k].t_end < grid.t_end))
+      throw std::invalid_argument(
+          end + (is_last ? " is not t_end = " : " is not before t_end = ") +
+          std::to_string(grid.t_end) +
+          (is_last ? "; the last window ends at t_end"
+                   : "; only the last window ends "
+                     "at t_end"));
+    const long long need = element_points > 0 ? element_points : min_points;
+    if (element_points > 0 ? w[k].points != need : w[k].points < need)
+      throw std::invalid_argument(
+          at + " has " + std::to_string(w[k].points) + " points, " +
+          (element_points > 0 ? "not " : "below ") + std::to_string(need) +
+          (element_points > 0 ? ", the element's size"
+                              : ", the minimum of " + grid.op) +
+          "; give windows of " + (element_points > 0 ? "" : "at least ") +
+          std::to_string(need) + " points");
+    last = w[k].t_end;
+    first += w[k].points - 1;
+    start_found = start_found || (!is_last && first == options.start_node);
+  }
+  if (!start_found)
+    throw std::invalid_argument(
+        "start_node " + std::to_string(options.start_node) +
+        " is not the first node of a given window; resume at a window's "
+        "first node");
 }
 
 }  // namespace detail
@@ -102,15 +159,20 @@ MarchResult MarchIvp(const P& problem, const InitialData& initial,
         std::to_string(tol.absolute) + ", " + std::to_string(tol.relative) +
         ")");
   // Validates the grid (operator, points, interval) once; under error
-  // control the operator's minimum stands in for the points.
+  // control or on given windows the operator's minimum stands in for the
+  // points.
   const sbp::Coefficients& table = sbp::Table(grid.op);
   const int min_points = table.min_points;
+  const bool given_windows = !options.given_windows.empty();
   if (table.max_points > 0)
     detail::CheckElementMarch(grid, table.max_points, adaptive,
-                              options.window_points);
+                              options.window_points, given_windows);
   sbp::CheckOperatorArguments<double>(
-      grid.op, adaptive || table.max_points > 0 ? min_points : grid.points,
+      grid.op,
+      adaptive || given_windows || table.max_points > 0 ? min_points
+                                                        : grid.points,
       grid.t_start, grid.t_end);
+  detail::CheckGivenWindows(grid, options, min_points, table.max_points);
   if (options.window_points < min_points)
     throw std::invalid_argument(
         "window of " + std::to_string(options.window_points) +

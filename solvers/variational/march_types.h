@@ -83,6 +83,13 @@ struct MarchPhases {
   }
 };
 
+// A window of a march on given windows (MarchOptions::given_windows): where
+// it ends, and its points, evenly spaced from the window before's end.
+struct GivenWindow {
+  double t_end = 0;
+  long long points = 0;
+};
+
 struct MarchOptions {
   // Points per window; 0: DefaultWindowPoints of the solver (solver_choice.h)
   // — for Newton 48 on a uniform grid and 24 under error control. On a
@@ -131,6 +138,14 @@ struct MarchOptions {
   // one: where a march can be stopped and resumed.
   long long start_node = 0;
   std::function<void(long long node, const InitialData &state)> at_boundary;
+  // Uniform grid only: march these windows instead, one after another from
+  // t_start, the last ending at t_end; a window's points are evenly spaced
+  // (an element's at its Gauss–Lobatto nodes), and grid.points and
+  // window_points are not used. The windows a march under error control
+  // accepted (MarchResult::windows), marched again so, give the same nodes
+  // without the machinery that chose them: its price apart from the
+  // solves' (bench/march_phases_bench).
+  std::vector<GivenWindow> given_windows;
   // Time the phases of every window (MarchResult::phases). Off by default:
   // a window of SBP84 is solved in tens of microseconds, and the clock reads
   // cost a few per cent of it.
@@ -176,6 +191,19 @@ struct MarchResult {
   double seconds = 0;
   MarchPhases phases;  // with MarchOptions::phase_timings, else zeros
 };
+
+// The windows a march accepted (kept with its trajectory), as the given
+// windows of a march over the same grid: each ends where the next starts,
+// the last at grid.t_end.
+inline std::vector<GivenWindow> AcceptedWindows(const MarchResult &m,
+                                                const Grid &grid) {
+  std::vector<GivenWindow> w;
+  for (std::size_t k = 0; k < m.windows.size(); ++k)
+    w.push_back(
+        {k + 1 < m.windows.size() ? m.windows[k + 1].t_start : grid.t_end,
+         m.windows[k].points});
+  return w;
+}
 
 // Called with (t, x, v) of every node, in order, each node once.
 using NodeObserver =

@@ -1,6 +1,8 @@
 // Marching on the uniform grid of grid.points nodes (march.h): a window of
 // W points covers W − 1 intervals, the last one takes the remainder (at
-// least the operator's minimum). A spectral element (lobatto.h) marches in
+// least the operator's minimum); or the given windows
+// (MarchOptions::given_windows), node i of window k being node
+// first_[k] + i of the march. A spectral element (lobatto.h) marches in
 // windows of its own size, whose ends are on the grid and whose inner
 // nodes are its Gauss–Lobatto nodes. A window that fails is solved again
 // with a fresh Jacobian, then split in halves (down to the operator's
@@ -8,6 +10,9 @@
 // limit is solved on a refined grid (and the requested grid's nodes
 // returned).
 #pragma once
+
+#include <algorithm>
+#include <vector>
 
 #include "solvers/variational/march_core.h"
 
@@ -22,7 +27,8 @@ class UniformMarch : public MarchCore<WindowT> {
 
   // The uniform grid of grid.points nodes.
   bool Run(InitialData& state) {
-    Refine(state, false);  // planned from the initial state, not a fallback
+    if (!options_.given_windows.empty()) return RunGiven(state);
+    Refine(state, false, Step());  // from the initial state, not a fallback
     const long long intervals = grid_.points - 1;
     const long long per_window = options_.window_points - 1;
     long long done = options_.start_node;
@@ -57,10 +63,27 @@ class UniformMarch : public MarchCore<WindowT> {
   // 6 % of the throughput; the anharmonic marches did not change.)
   static constexpr Tolerance kPredictorTolerance = {1e-4, 1e-4};
 
-  // Uniform grid: Δt·ω of the requested grid at a state, against the limit.
-  double StepRatio(const InitialData& state) const {
+  // The given windows, one after another (march.h has checked them).
+  bool RunGiven(InitialData& state) {
+    const std::vector<GivenWindow>& w = options_.given_windows;
+    first_.assign(1, 0);
+    for (const GivenWindow& g : w)
+      first_.push_back(first_.back() + g.points - 1);
+    Refine(state, false,
+           (w[0].t_end - grid_.t_start) / double(w[0].points - 1));
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      if (first_[k] < options_.start_node) continue;  // resumed after it
+      if (!Window(state, first_[k], w[k].points, 0, k + 1 == w.size()))
+        return false;
+      if (options_.at_boundary && k + 1 < w.size())
+        options_.at_boundary(first_[k + 1], state);
+    }
+    return true;
+  }
+
+  // Δt·ω of the requested step at a state, against the limit.
+  double StepRatio(const InitialData& state, double dt) const {
     if (order_ != 2) return 0.0;
-    const double dt = (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
     return dt * window_.FastestFrequency(state.x.data(), state.v.data()) /
            StabilityLimit(grid_.op);
   }
@@ -71,10 +94,10 @@ class UniformMarch : public MarchCore<WindowT> {
   // max|x| = 1.42, at 0.5 it stays at 1.03), and at least doubles it when
   // `at_least_double` (a window came out under-resolved somewhere inside).
   // False when refinement is off or would exceed options.max_refinement.
-  bool Refine(const InitialData& state, bool at_least_double) {
+  bool Refine(const InitialData& state, bool at_least_double, double dt) {
     // A spectral element is a window of its fixed size: not refinable.
     if (!options_.stabilize || sbp::IsElement(grid_.op)) return false;
-    int needed = static_cast<int>(std::ceil(StepRatio(state) / 0.5));
+    int needed = static_cast<int>(std::ceil(StepRatio(state, dt) / 0.5));
     if (at_least_double)
       needed = std::max(needed, std::min(2 * refine_, options_.max_refinement));
     if (needed <= refine_ || needed > options_.max_refinement) return false;
@@ -118,7 +141,7 @@ class UniformMarch : public MarchCore<WindowT> {
         a.failure == WindowFailure::kUnderResolved ||
         (refine_ > 1 && (a.failure == WindowFailure::kCoarse ||
                          a.failure == WindowFailure::kCheck));
-    if (refinable && Refine(state, true)) {
+    if (refinable && Refine(state, true, (t1 - t0) / double(points - 1))) {
       ++out_.fallbacks;
       return Window(state, first, points, depth, last_of_march);
     }
@@ -137,12 +160,29 @@ class UniformMarch : public MarchCore<WindowT> {
                   last_of_march);
   }
 
+  // The time of node `index` of the march.
   double T(long long index) const {
-    const double dt = (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
+    if (!first_.empty()) {  // given windows: window k holds node index
+      const std::vector<GivenWindow>& w = options_.given_windows;
+      const std::size_t k =
+          std::upper_bound(first_.begin(), first_.end(), index) -
+          first_.begin() - 1;
+      if (k + 1 >= first_.size()) return grid_.t_end;  // the last node
+      const double t0 = k == 0 ? grid_.t_start : w[k - 1].t_end;
+      const long long i = index - first_[k];
+      return i == 0
+                 ? t0
+                 : t0 + (w[k].t_end - t0) * double(i) / double(w[k].points - 1);
+    }
     return index == grid_.points - 1 ? grid_.t_end
-                                     : grid_.t_start + dt * double(index);
+                                     : grid_.t_start + Step() * double(index);
   }
 
+  double Step() const {
+    return (grid_.t_end - grid_.t_start) / double(grid_.points - 1);
+  }
+
+  std::vector<long long> first_;  // given windows: each one's first node
   int refine_ = 1;   // solve grid = requested grid refined this many times
   Attempt attempt_;  // every window's, its storage kept
 };
