@@ -181,28 +181,54 @@ class WindowSolver {
       const std::size_t at = std::size_t(i) * d;
       return std::max(start, window_.FastestFrequency(&px_[at], &pv_[at]));
     };
-    // An element is scanned node by node: one that jumps a pericentre has
-    // low frequencies at both ends (lgl16 at 10⁻⁵ on Kepler e = 0.9: two of
-    // four rejections, an estimate 10⁵ times the tolerance, and a Newton
-    // failure). A finite-difference window is short and rises monotonically
-    // across it: its far end says enough.
+    // An element is sampled inside, not only at its far end: one that jumps
+    // a pericentre has low frequencies at both ends (lgl16 at 10⁻⁵ on
+    // Kepler e = 0.9: two of four rejections, an estimate 10⁵ times the
+    // tolerance, and a Newton failure). Every kStride-th node and the far
+    // end are sampled, and only past a sample over the cap the nodes
+    // between it and the last sample under it. A frequency costs about 1100
+    // instructions. Against the far end alone (callgrind, one march each of
+    // Kepler e = 0.9 and the anharmonic oscillator, lgl8/12/16, 10⁻⁵ …
+    // 10⁻⁸): taken at every node +4.4 … +15 % in the 23 marches that jump no
+    // pericentre, every fourth −0.7 … +2.7 %; lgl16 at 10⁻⁵ −27 and −32 %.
+    // Sampled at the middle node only, that march still jumped (556 nodes
+    // and 10.2 M instructions against 541 and 7.3 M). A finite-difference
+    // window is short and rises monotonically across it: its far end says
+    // enough.
     const bool scan = sbp::IsElement(window_.op());
     const double cap = theta_cap * (1 + 1e-9);
     for (int tries = 0;; ++tries) {
       double tau = 0;
       if (scan) {
-        // The first node past the cap, between it and the one before it
-        // log-linearly (from (0, 0) for the first: ω constant).
         a.omega = start;
-        int over = 0;
+        int over = 0, under = 0;  // a sample past the cap, the last under it
         double g = 0;
-        for (int i = 1; i < points && !over; ++i) {
+        const auto past = [&](int i) {
           const double w = omega(i);
           a.omega = std::max(a.omega, w);
           g = tau_[i] * w / offset;
-          if (g > cap) over = i;
+          return g > cap;
+        };
+        for (int i = std::min(kStride, points - 1);;
+             i = std::min(i + kStride, points - 1)) {
+          if (past(i)) {
+            over = i;
+            break;
+          }
+          if (i == points - 1) break;
+          under = i;
         }
         if (!over || tries == 3) return pr;
+        double g_over = g;
+        for (int i = under + 1; i < over; ++i)
+          if (past(i)) {
+            over = i;
+            g_over = g;
+            break;
+          }
+        g = g_over;
+        // The first node past the cap, between it and the one before it
+        // log-linearly (from (0, 0) for the first: ω constant).
         const double lo_g =
             over > 1 ? tau_[over - 1] * omega(over - 1) / offset : 0.0;
         tau = over > 1 && lo_g > 0
@@ -258,6 +284,8 @@ class WindowSolver {
   // §2). Never below kTightest, where three hundredfold retries ended.
   static constexpr double kAim = 0.1;
   static constexpr double kTightest = 1e-6;
+  // The spacing, in nodes, of an element's frequency samples (FitToFrequency).
+  static constexpr int kStride = 4;
 };
 
 }  // namespace vivp::variational::detail
