@@ -36,7 +36,7 @@ struct Cost {
 };
 
 // The medians of `repeats` untimed runs of the marches, interleaved, per
-// node of each: the adaptive one and the uniform ones.
+// node of each: the adaptive one and the others of its row.
 template <class A, class U>
 std::vector<double> Untimed(A&& adaptive, const std::vector<U>& uniform,
                             int repeats) {
@@ -72,8 +72,8 @@ Run Median(F&& march, int repeats) {
 
 // The end state's error: the largest over components of the handed-off
 // position's and velocity's distance from the exact (or reference) state.
-double EndError(const studies::NamedProblem& problem, double t_end,
-                const MarchResult& m) {
+inline double EndError(const studies::NamedProblem& problem, double t_end,
+                       const MarchResult& m) {
   const studies::ExactState e = problem.exact(t_end);
   double err = 0;
   for (std::size_t c = 0; c < e.x.size(); ++c)
@@ -82,7 +82,7 @@ double EndError(const studies::NamedProblem& problem, double t_end,
   return err;
 }
 
-void Print(const char* kind, double tol, const Run& run, double error) {
+inline void Print(const char* kind, double tol, const Run& run, double error) {
   const MarchResult& m = run.result;
   const MarchPhases& p = m.phases;
   const double nodes = double(std::max<long long>(m.points, 1));
@@ -108,10 +108,10 @@ void Print(const char* kind, double tol, const Run& run, double error) {
 }
 
 // The table of per-node costs and their ratios.
-void PrintCosts(const std::vector<Cost>& costs, int repeats) {
+inline void PrintCosts(const std::vector<Cost>& costs, int repeats) {
   std::printf(
       "\nCost per node without the phase clocks, µs (median of %d runs of "
-      "each march, the two interleaved), and its ratio. A spectral "
+      "each march, interleaved), and its ratio. A spectral "
       "element's march solves, besides the halves it keeps, the whole "
       "element for their estimate (step doubling): its share of the timed "
       "adaptive march, and the ratio with that share taken out. Against the "

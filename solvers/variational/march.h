@@ -92,6 +92,7 @@ inline void CheckGivenWindows(const Grid& grid, const MarchOptions& options,
     throw std::invalid_argument(
         "given_windows are the windows of a march without error control; "
         "under a tolerance the march chooses its own: clear one of them");
+  const long long need = element_points > 0 ? element_points : min_points;
   double last = grid.t_start;
   long long first = 0;
   bool start_found = options.start_node == 0;
@@ -114,7 +115,6 @@ inline void CheckGivenWindows(const Grid& grid, const MarchOptions& options,
           (is_last ? "; the last window ends at t_end"
                    : "; only the last window ends "
                      "at t_end"));
-    const long long need = element_points > 0 ? element_points : min_points;
     if (element_points > 0 ? w[k].points != need : w[k].points < need)
       throw std::invalid_argument(
           at + " has " + std::to_string(w[k].points) + " points, " +

@@ -197,65 +197,67 @@ class WindowSolver {
     // enough.
     const bool scan = sbp::IsElement(window_.op());
     const double cap = theta_cap * (1 + 1e-9);
+    // g(τ) = τ·ω(τ)/offset at node i (the largest ω into a.omega).
+    const auto g_at = [&](int i) {
+      const double w = omega(i);
+      a.omega = std::max(a.omega, w);
+      return tau_[i] * w / offset;
+    };
+    // Where g meets theta_cap between node lo (g_lo ≤ cap) and node hi
+    // (g_hi past it), log-linearly; from (0, 0) where g_lo is 0 (the start:
+    // ω constant).
+    const auto crossing = [&](int lo, double g_lo, int hi, double g_hi) {
+      return g_lo > 0 ? tau_[lo] * std::exp(std::log(theta_cap / g_lo) *
+                                            std::log(tau_[hi] / tau_[lo]) /
+                                            std::log(g_hi / g_lo))
+                      : tau_[hi] * theta_cap / g_hi;
+    };
     for (int tries = 0;; ++tries) {
-      double tau = 0;
+      a.omega = start;
+      // The first node past the cap (hi) and the one before it (lo).
+      int lo = 0, hi = 0;
+      double g_lo = 0, g_hi = 0;
       if (scan) {
-        a.omega = start;
-        int over = 0, under = 0;  // a sample past the cap, the last under it
-        double g = 0;
-        const auto past = [&](int i) {
-          const double w = omega(i);
-          a.omega = std::max(a.omega, w);
-          g = tau_[i] * w / offset;
-          return g > cap;
-        };
-        for (int i = std::min(kStride, points - 1);;
+        // The samples, then the nodes between the first past the cap and
+        // the last under it.
+        for (int i = std::min(kStride, points - 1); !hi;
              i = std::min(i + kStride, points - 1)) {
-          if (past(i)) {
-            over = i;
+          const double g = g_at(i);
+          if (g > cap)
+            hi = i, g_hi = g;
+          else if (i == points - 1)
             break;
-          }
-          if (i == points - 1) break;
-          under = i;
+          else
+            lo = i, g_lo = g;
         }
-        if (!over || tries == 3) return pr;
-        double g_over = g;
-        for (int i = under + 1; i < over; ++i)
-          if (past(i)) {
-            over = i;
-            g_over = g;
+        if (!hi || tries == 3) return pr;
+        for (int i = lo + 1; i < hi; ++i) {
+          const double g = g_at(i);
+          if (g > cap) {
+            hi = i, g_hi = g;
             break;
           }
-        g = g_over;
-        // The first node past the cap, between it and the one before it
-        // log-linearly (from (0, 0) for the first: ω constant).
-        const double lo_g =
-            over > 1 ? tau_[over - 1] * omega(over - 1) / offset : 0.0;
-        tau = over > 1 && lo_g > 0
-                  ? tau_[over - 1] *
-                        std::exp(std::log(theta_cap / lo_g) *
-                                 std::log(tau_[over] / tau_[over - 1]) /
-                                 std::log(g / lo_g))
-                  : tau_[over] * theta_cap / g;
+          lo = i, g_lo = g;
+        }
       } else {
-        a.omega = omega(points - 1);
-        if (!(dt * a.omega > cap) || tries == 3) return pr;
-        // (τ, τ·ω(τ)/offset) at the nearest node past the crossing, and at
-        // the next one back.
-        double hi_tau = tau_[points - 1], hi_g = dt * a.omega;
-        tau = hi_tau * theta_cap / hi_g;  // from (0, 0): ω constant
+        // The far end, then back from it to the last node under the cap
+        // (none: from (0, 0) to the far end). Only the far end's ω is the
+        // window's (a.omega).
+        hi = points - 1;
+        a.omega = omega(hi);
+        g_hi = dt * a.omega;
+        if (!(g_hi > cap) || tries == 3) return pr;
+        double g_next = g_hi;
         for (int i = points - 2; i > 0; --i) {
           const double g = tau_[i] * omega(i) / offset;
           if (g <= theta_cap) {
-            tau = tau_[i] *
-                  std::exp(std::log(theta_cap / g) *
-                           std::log(hi_tau / tau_[i]) / std::log(hi_g / g));
+            lo = i, g_lo = g, hi = i + 1, g_hi = g_next;
             break;
           }
-          hi_tau = tau_[i];
-          hi_g = g;
+          g_next = g;
         }
       }
+      const double tau = crossing(lo, g_lo, hi, g_hi);
       dt = tau / offset;
       a.dt = dt;
       times();
